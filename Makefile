@@ -1,0 +1,20 @@
+# rosbook-one: the README's two commands are `make demo` and `make test`.
+.PHONY: setup build demo test bench clean
+
+setup:
+	@./scripts/setup.sh
+
+build:
+	@./scripts/build.sh
+
+demo: setup
+	@./scripts/demo.sh
+
+test: setup
+	@./scripts/test.sh
+
+bench: setup
+	@./scripts/bench.sh
+
+clean:
+	rm -rf catkin_ws/build catkin_ws/devel

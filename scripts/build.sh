@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Build the catkin workspace (and its C++ unit tests) with Debian's Python.
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+source "$here/scripts/python-env.sh"
+cd "$here/catkin_ws"
+# A build configured with another interpreter caches its path: start afresh.
+if [ -f build/CMakeCache.txt ] && ! grep -q "^PYTHON_EXECUTABLE:FILEPATH=/usr/bin/python3$" build/CMakeCache.txt; then
+  echo "build: build/ was configured with another Python; removing it"
+  rm -rf build devel
+fi
+jobs=${ROSBOOK_JOBS:-$(nproc)}
+log=$(mktemp)
+if ! catkin_make -j"$jobs" -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=Release >"$log" 2>&1 \
+   || ! catkin_make -j"$jobs" tests >>"$log" 2>&1; then
+  tail -n 60 "$log"
+  echo "build: FAILED (full log: $log)" >&2
+  exit 1
+fi
+grep -E "warning:" "$log" | sort -u | head -n 20 || true
+rm -f "$log"
+echo "build: OK ($here/catkin_ws/devel)"

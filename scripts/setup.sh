@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# One-step set-up: install every Debian package the workspace uses, then build it
+# with Debian's /usr/bin/python3 (never a pyenv interpreter). Idempotent and quiet
+# when everything is already present.
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+cd "$here"
+
+shopt -s nullglob
+lists=(scripts/debian-packages.txt catkin_ws/src/*/debian-packages.txt)
+wanted=$(cat "${lists[@]}" \
+  | sed 's/#.*//' | tr -s ' \t' '\n' | sed '/^$/d' | sort -u)
+missing=()
+for pkg in $wanted; do
+  dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || missing+=("$pkg")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${#missing[@]} Debian packages: ${missing[*]}"
+  sudo_cmd=""
+  [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo_cmd apt-get update -qq
+  $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+exec "$here/scripts/build.sh"

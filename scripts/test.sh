@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Run every test: C++ gtests, Python unit tests and the ROS integration tests (real roscore,
+# real nodes, rostest). Ends with pytest's summary line; exits non-zero on any failure.
+# Extra arguments go to pytest (e.g. scripts/test.sh -k basics).
+set -eo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+source "$here/scripts/python-env.sh"
+source "$here/catkin_ws/devel/setup.bash"
+cd "$here"
+shopt -s nullglob
+unit_dirs=(catkin_ws/src/*/test)
+workers=${ROSBOOK_TEST_WORKERS:-2}
+exec /usr/bin/python3 -m pytest -n "$workers" tests "${unit_dirs[@]}" "$@"

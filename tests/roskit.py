@@ -1,0 +1,246 @@
+"""Test helpers that drive real ROS: a private roscore on a free port, real nodes as
+subprocesses, a probe that records topics to JSON lines, and rostest runs.
+
+Every process started through a RosGraph is killed (with its process group) when the
+graph is closed, so a failing test leaves nothing running.
+"""
+
+import json
+import os
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parent.parent
+PROBE = Path(__file__).resolve().parent / "tools" / "topic_probe.py"
+DEBIAN_PYTHON = "/usr/bin/python3"
+
+
+def free_port():
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        return sock.getsockname()[1]
+
+
+def ros_environment(port):
+    env = dict(os.environ)
+    if "ROS_PACKAGE_PATH" not in env:
+        raise RuntimeError(
+            "ROS environment missing: run the tests with `make test`, or "
+            "`source catkin_ws/devel/setup.bash` first"
+        )
+    env["ROS_MASTER_URI"] = f"http://127.0.0.1:{port}"
+    env["ROS_HOSTNAME"] = "127.0.0.1"
+    env["PYENV_VERSION"] = "system"
+    env["PYTHONUNBUFFERED"] = "1"
+    env["ROSCONSOLE_FORMAT"] = "[${severity}] [${node}]: ${message}"
+    env["ROS_LOG_DIR"] = env.get("ROS_LOG_DIR") or tempfile.mkdtemp(prefix="roslog-")
+    return env
+
+
+class RosGraph:
+    """A roscore on a free port plus the processes a test starts against it."""
+
+    def __init__(self, workdir):
+        self.workdir = Path(workdir)
+        self.port = free_port()
+        self.env = ros_environment(self.port)
+        self.procs = []
+        self._log_index = 0
+        self.core = self.start(["roscore", "-p", str(self.port)], name="roscore")
+        self.wait_for_master()
+
+    # -- processes ---------------------------------------------------------------
+    def start(self, cmd, name=None, stdin=None, env=None, cwd=None):
+        """Start a command (list or shell string); its output goes to a log file."""
+        self._log_index += 1
+        label = name or (cmd if isinstance(cmd, str) else Path(cmd[0]).name)
+        log_path = self.workdir / f"{self._log_index:02d}-{_safe(label)}.log"
+        log = open(log_path, "w")
+        proc = subprocess.Popen(
+            cmd,
+            shell=isinstance(cmd, str),
+            stdout=log,
+            stderr=subprocess.STDOUT,
+            stdin=stdin if stdin is not None else subprocess.DEVNULL,
+            env=env or self.env,
+            cwd=cwd or self.workdir,
+            start_new_session=True,
+        )
+        proc.log_path = log_path
+        proc.label = label
+        self.procs.append(proc)
+        return proc
+
+    def run(self, cmd, timeout=30, check=True, input=None, cwd=None):
+        """Run a command to completion; returns CompletedProcess with text output."""
+        done = subprocess.run(
+            cmd,
+            shell=isinstance(cmd, str),
+            capture_output=True,
+            text=True,
+            timeout=timeout,
+            env=self.env,
+            cwd=cwd or self.workdir,
+            input=input,
+        )
+        if check and done.returncode != 0:
+            raise AssertionError(
+                f"{cmd!r} exited {done.returncode}\nstdout:\n{done.stdout}\nstderr:\n{done.stderr}"
+            )
+        return done
+
+    @staticmethod
+    def output(proc):
+        return Path(proc.log_path).read_text(errors="replace")
+
+    def stop(self, proc, sig=signal.SIGINT, timeout=10):
+        if proc.poll() is None:
+            try:
+                os.killpg(proc.pid, sig)
+                proc.wait(timeout=timeout)
+            except (ProcessLookupError, subprocess.TimeoutExpired):
+                _kill_group(proc)
+        return proc.returncode
+
+    def close(self):
+        for proc in reversed(self.procs):
+            self.stop(proc, timeout=5)
+
+    # -- waiting -----------------------------------------------------------------
+    def wait_for_master(self, timeout=30):
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if self.core.poll() is not None:
+                raise RuntimeError("roscore died:\n" + self.output(self.core))
+            done = subprocess.run(
+                ["rosparam", "get", "/run_id"], env=self.env, capture_output=True
+            )
+            if done.returncode == 0:
+                return
+            time.sleep(0.2)
+        raise TimeoutError("roscore did not answer within %s s" % timeout)
+
+    def wait_for(self, predicate, timeout=20, what="condition", interval=0.1):
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if predicate():
+                return
+            time.sleep(interval)
+        raise AssertionError(f"timed out after {timeout} s waiting for {what}")
+
+    def topics(self):
+        done = self.run(["rostopic", "list"], check=False)
+        return set(done.stdout.split())
+
+    def wait_for_topic(self, topic, timeout=20):
+        topic = "/" + topic.lstrip("/")
+        self.wait_for(lambda: topic in self.topics(), timeout, f"topic {topic}")
+
+    def wait_for_service(self, service, timeout=20):
+        service = "/" + service.lstrip("/")
+
+        def advertised():
+            return service in self.run(["rosservice", "list"], check=False).stdout.split()
+
+        self.wait_for(advertised, timeout, f"service {service}")
+
+    # -- topics --------------------------------------------------------------------
+    def probe(self, topics, count=None, duration=None, timeout=30, name=None, ready=True):
+        """Start recording `topics` (list of names) in a subprocess; returns a Probe.
+
+        With ready=True, wait until the probe is connected to every topic's publisher
+        (so the publishers must exist); with ready=False, return at once.
+        """
+        probe = Probe(self, topics, count, duration, timeout, name)
+        if ready:
+            probe.wait_ready()
+        return probe
+
+    def echo(self, topic, count=1, timeout=30):
+        """Block until `count` messages of `topic` arrive; return them as dicts."""
+        probe = self.probe([topic], count=count, timeout=timeout)
+        return probe.wait(timeout + 10)
+
+
+class Probe:
+    """Records messages as JSON lines: {"topic", "wall", "ros", "msg"}."""
+
+    def __init__(self, graph, topics, count, duration, timeout, name):
+        self.graph = graph
+        self.out = graph.workdir / f"probe-{graph._log_index + 1:02d}.jsonl"
+        cmd = [DEBIAN_PYTHON, str(PROBE), "--out", str(self.out), "--timeout", str(timeout)]
+        if count is not None:
+            cmd += ["--count", str(count)]
+        if duration is not None:
+            cmd += ["--duration", str(duration)]
+        if name:
+            cmd += ["--name", name]
+        self.proc = graph.start(cmd + list(topics), name="probe")
+        self.timeout = timeout
+
+    def wait_ready(self):
+        ready = self.out.with_suffix(".ready")
+
+        def connected():
+            if self.proc.poll() not in (None, 0):
+                raise AssertionError("probe failed:\n" + self.graph.output(self.proc))
+            return ready.exists()
+
+        self.graph.wait_for(connected, self.timeout, "probe to connect")
+
+    def messages(self):
+        if not self.out.exists():
+            return []
+        lines = self.out.read_text().splitlines()
+        return [json.loads(line) for line in lines if line.strip()]
+
+    def wait(self, timeout=60):
+        try:
+            self.proc.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            self.graph.stop(self.proc)
+        if self.proc.returncode not in (0, None):
+            raise AssertionError(
+                f"probe failed ({self.proc.returncode}):\n" + self.graph.output(self.proc)
+            )
+        return self.messages()
+
+    def stop(self):
+        self.graph.stop(self.proc)
+        return self.messages()
+
+
+def run_rostest(package, test_file, timeout=300, extra_args=()):
+    """Run `rostest package test_file` (its own master on a free port); return output."""
+    env = ros_environment(free_port())
+    done = subprocess.run(
+        ["rostest", package, test_file, *extra_args],
+        capture_output=True,
+        text=True,
+        timeout=timeout,
+        env=env,
+    )
+    output = done.stdout + done.stderr
+    if done.returncode != 0:
+        raise AssertionError(f"rostest {package} {test_file} exited {done.returncode}\n{output}")
+    return output
+
+
+def _safe(label):
+    return "".join(c if c.isalnum() or c in "-_." else "_" for c in str(label))[:40]
+
+
+def _kill_group(proc):
+    try:
+        os.killpg(proc.pid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass
+    try:
+        proc.wait(timeout=5)
+    except subprocess.TimeoutExpired:
+        print(f"could not kill {proc.args!r}", file=sys.stderr)

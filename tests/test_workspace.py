@@ -1,0 +1,23 @@
+"""The workspace's environment: Debian's Python wins over pyenv, roscore starts, topics flow."""
+
+import os
+import subprocess
+
+
+def test_python3_is_debian_after_sourcing(tmp_path):
+    env = dict(os.environ, PATH="/root/.pyenv/shims:" + os.environ["PATH"])
+    env.pop("PYENV_VERSION", None)
+    done = subprocess.run(
+        ["bash", "-c", "source catkin_ws/devel/setup.bash && python3 -c 'import rospy, sys; print(sys.executable)'"],
+        env=env, capture_output=True, text=True, cwd=os.path.dirname(os.path.dirname(__file__)) or ".",
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "/usr/bin/python3"
+
+
+def test_probe_records_a_published_message(ros):
+    pub = ros.start(["rostopic", "pub", "-r", "10", "/probe_check", "std_msgs/Int32", "data: 7"])
+    ros.wait_for_topic("probe_check")
+    messages = ros.echo("probe_check", count=2)
+    assert [m["msg"]["data"] for m in messages] == [7, 7]
+    assert pub.poll() is None
