@@ -117,9 +117,7 @@ class RosGraph:
         while time.monotonic() < deadline:
             if self.core.poll() is not None:
                 raise RuntimeError("roscore died:\n" + self.output(self.core))
-            done = subprocess.run(
-                ["rosparam", "get", "/run_id"], env=self.env, capture_output=True
-            )
+            done = subprocess.run(["rosparam", "get", "/run_id"], env=self.env, capture_output=True)
             if done.returncode == 0:
                 return
             time.sleep(0.2)

@@ -8,8 +8,16 @@ def test_python3_is_debian_after_sourcing(tmp_path):
     env = dict(os.environ, PATH="/root/.pyenv/shims:" + os.environ["PATH"])
     env.pop("PYENV_VERSION", None)
     done = subprocess.run(
-        ["bash", "-c", "source catkin_ws/devel/setup.bash && python3 -c 'import rospy, sys; print(sys.executable)'"],
-        env=env, capture_output=True, text=True, cwd=os.path.dirname(os.path.dirname(__file__)) or ".",
+        [
+            "bash",
+            "-c",
+            "source catkin_ws/devel/setup.bash && "
+            "python3 -c 'import rospy, sys; print(sys.executable)'",
+        ],
+        env=env,
+        capture_output=True,
+        text=True,
+        cwd=os.path.dirname(os.path.dirname(__file__)) or ".",
     )
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "/usr/bin/python3"
