@@ -1,0 +1,27 @@
+#!/usr/bin/python3
+"""doubler: republishes each Int32 from `number` times two on `doubled` (Example 3-6)."""
+
+import rospy
+from std_msgs.msg import Int32
+
+from basics.doubling import double_int32
+
+
+def main():
+    rospy.init_node("doubler")
+    # Advertise before subscribing: the book's order lets the callback run before pub exists.
+    pub = rospy.Publisher("doubled", Int32, queue_size=10)
+
+    def callback(msg):
+        doubled = double_int32(msg.data)
+        if doubled is None:
+            rospy.logwarn("2 x %d does not fit in an Int32; nothing published", msg.data)
+            return
+        pub.publish(Int32(doubled))
+
+    rospy.Subscriber("number", Int32, callback)
+    rospy.spin()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,19 @@
+#!/usr/bin/python3
+"""topic_subscriber: prints each integer that arrives on `counter` (Example 3-2)."""
+
+import rospy
+from std_msgs.msg import Int32
+
+
+def callback(msg):
+    print(msg.data, flush=True)
+
+
+def main():
+    rospy.init_node("topic_subscriber")
+    rospy.Subscriber("counter", Int32, callback)
+    rospy.spin()
+
+
+if __name__ == "__main__":
+    main()
