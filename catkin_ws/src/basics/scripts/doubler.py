@@ -2,9 +2,8 @@
 """doubler: republishes each Int32 from `number` times two on `doubled` (Example 3-6)."""
 
 import rospy
-from std_msgs.msg import Int32
-
 from basics.doubling import double_int32
+from std_msgs.msg import Int32
 
 
 def main():

@@ -12,15 +12,12 @@ import sys
 
 import actionlib
 import rospy
-
 from basics import timer
 from basics.msg import TimerAction, TimerGoal
 
 
 def feedback_cb(feedback):
-    lines = timer.feedback_lines(
-        feedback.time_elapsed.to_sec(), feedback.time_remaining.to_sec()
-    )
+    lines = timer.feedback_lines(feedback.time_elapsed.to_sec(), feedback.time_remaining.to_sec())
     print("\n".join(lines), flush=True)
 
 

@@ -8,7 +8,6 @@ too-long wait"), and so is a negative one. Time is ROS time (follows /clock unde
 
 import actionlib
 import rospy
-
 from basics import timer
 from basics.msg import TimerAction, TimerFeedback, TimerResult
 

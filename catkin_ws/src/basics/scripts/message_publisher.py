@@ -4,7 +4,6 @@
 from random import random
 
 import rospy
-
 from basics.msg import Complex
 
 

@@ -2,7 +2,6 @@
 """message_subscriber: prints each basics/Complex from `complex` (Example 3-5)."""
 
 import rospy
-
 from basics.msg import Complex
 
 

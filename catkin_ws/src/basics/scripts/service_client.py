@@ -10,7 +10,6 @@ Waits for the service to be advertised if the server is not running yet.
 import sys
 
 import rospy
-
 from basics.srv import WordCount
 from basics.words import format_count
 

@@ -10,7 +10,6 @@ import argparse
 import sys
 
 import rospy
-
 from basics.srv import WordCount, WordCountResponse
 from basics.words import RETURN_MODES, count_words, shape_reply
 

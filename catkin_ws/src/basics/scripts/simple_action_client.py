@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """simple_action_client: sends one `timer` goal and prints the time elapsed (chapter 5).
 
-    rosrun basics simple_action_client.py            # the book's 5 s goal
-    rosrun basics simple_action_client.py --duration 2
+rosrun basics simple_action_client.py            # the book's 5 s goal
+rosrun basics simple_action_client.py --duration 2
 """
 
 import argparse
@@ -10,7 +10,6 @@ import sys
 
 import actionlib
 import rospy
-
 from basics.msg import TimerAction, TimerGoal
 from basics.timer import seconds_arg
 

@@ -7,7 +7,6 @@ A negative wait is aborted. Time is ROS time, so it follows /clock under use_sim
 
 import actionlib
 import rospy
-
 from basics.msg import TimerAction, TimerResult
 from basics.timer import NEGATIVE
 
