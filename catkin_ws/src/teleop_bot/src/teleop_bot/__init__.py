@@ -1,0 +1,1 @@
+"""ROS-free logic of the chapter 8 teleoperation nodes."""

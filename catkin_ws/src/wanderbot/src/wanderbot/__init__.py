@@ -1,0 +1,1 @@
+"""ROS-free decision logic for the wanderbot nodes (chapter 7)."""

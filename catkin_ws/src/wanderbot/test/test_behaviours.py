@@ -1,0 +1,73 @@
+"""The chapter 7 state machines, driven with injected times."""
+
+import sys
+from pathlib import Path
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
+
+from wanderbot.behaviours import TrafficLight, Wanderer  # noqa: E402
+from wanderbot.params import ParamError, finite_number, positive_number  # noqa: E402
+
+
+def run_light(start, seconds, dt=0.1):
+    light = TrafficLight(start, period=3.0)
+    steps = int(round(seconds / dt))
+    return [(start + i * dt, light.update(start + i * dt)) for i in range(steps)]
+
+
+def test_traffic_light_turns_green_at_once_then_alternates_every_3_s():
+    samples = run_light(100.0, 12.55)
+    changes = [t for (t, d), (_, prev) in zip(samples[1:], samples, strict=False) if d != prev]
+    assert samples[0][1] is True
+    assert changes == pytest.approx([103.0, 106.0, 109.0, 112.0], abs=1e-6)
+
+
+def test_traffic_light_share_of_driving_is_half():
+    samples = run_light(0.0, 60.0)
+    share = sum(1 for _, d in samples if d) / len(samples)
+    assert share == pytest.approx(0.5, abs=0.02)
+
+
+def test_wanderer_drives_until_obstacle_then_spins_5_s():
+    w = Wanderer(0.0)
+    assert w.update(0.1, 3.0) == Wanderer.DRIVE
+    assert w.command(0.3, 1.0) == (0.3, 0.0)
+    assert w.update(2.0, 0.79) == Wanderer.SPIN
+    assert w.command(0.3, 1.0) == (0.0, 1.0)
+    assert w.update(6.9, 0.5) == Wanderer.SPIN  # spins for the whole 5 s
+    assert w.update(7.05, 3.0) == Wanderer.DRIVE
+
+
+def test_wanderer_times_out_after_30_s_of_driving():
+    w = Wanderer(0.0)
+    assert w.update(29.9, 5.0) == Wanderer.DRIVE
+    assert w.update(30.1, 5.0) == Wanderer.SPIN
+    assert w.update(35.2, 5.0) == Wanderer.DRIVE
+    assert w.update(65.1, 5.0) == Wanderer.DRIVE
+    assert w.update(65.3, 5.0) == Wanderer.SPIN
+
+
+def test_wanderer_treats_unknown_or_nan_range_as_blocked():
+    assert Wanderer(0.0).update(0.1, None) == Wanderer.SPIN
+    assert Wanderer(0.0).update(0.1, float("nan")) == Wanderer.SPIN
+    assert Wanderer(0.0).update(0.1, float("inf")) == Wanderer.DRIVE
+
+
+def test_wanderer_spins_again_when_still_blocked_after_spinning():
+    w = Wanderer(0.0)
+    w.update(1.0, 0.5)
+    assert w.update(6.1, 0.5) == Wanderer.DRIVE
+    assert w.update(6.2, 0.5) == Wanderer.SPIN
+
+
+def test_param_checks():
+    assert positive_number("~x", 2) == 2.0
+    assert finite_number("~x", -0.5) == -0.5
+    for bad in ("fast", float("nan"), float("inf"), True, None):
+        with pytest.raises(ParamError, match="~x"):
+            finite_number("~x", bad)
+    for bad in (0, -1.0, float("inf")):
+        with pytest.raises(ParamError, match="~x"):
+            positive_number("~x", bad)
