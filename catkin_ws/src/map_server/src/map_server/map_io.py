@@ -182,12 +182,18 @@ def parse_map_yaml(text, yaml_path):
     )
 
 
+def _cwd_note(path):
+    return "" if Path(path).is_absolute() else f" (looked in {Path.cwd()})"
+
+
 def read_map_yaml(yaml_path):
     yaml_path = Path(yaml_path)
     try:
         text = yaml_path.read_text(encoding="utf-8")
     except FileNotFoundError:
-        raise MapFileNotFoundError(f"{yaml_path}: map YAML file not found") from None
+        raise MapFileNotFoundError(
+            f"{yaml_path}: map YAML file not found{_cwd_note(yaml_path)}"
+        ) from None
     except IsADirectoryError:
         raise MapYamlError(f"{yaml_path}: is a directory, not a map YAML file") from None
     except UnicodeDecodeError:
@@ -209,7 +215,7 @@ def read_grey_image(path):
         with open(path, "rb") as handle:
             data = handle.read()
     except FileNotFoundError:
-        raise MapFileNotFoundError(f"{path}: map image not found") from None
+        raise MapFileNotFoundError(f"{path}: map image not found{_cwd_note(path)}") from None
     except OSError as err:
         raise MapImageError(f"{path}: cannot read image: {err.strerror or err}") from None
     if pgm.is_pgm(data):
