@@ -1,0 +1,135 @@
+"""map_server as the book runs it: a YAML in, a latched /map, /map_metadata and /static_map out."""
+
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+
+REPO = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(REPO / "catkin_ws" / "src" / "map_server" / "src"))
+from map_server import map_io  # noqa: E402
+
+ORIGIN = (-1.5, 2.0, 0.0)
+RESOLUTION = 0.1
+
+
+def sample_map(tmp_path, name="lab"):
+    """A 7 x 5 map whose cells are all different kinds, with a recognisable layout."""
+    data = np.zeros((5, 7), dtype=np.int8)
+    data[0, :] = 100  # bottom wall
+    data[:, 6] = 100  # east wall
+    data[4, :3] = -1  # unseen top-left corner
+    omap = map_io.OccupancyMap(data, RESOLUTION, ORIGIN)
+    _, yaml_path = map_io.save_map(tmp_path / name, omap)
+    return data, yaml_path
+
+
+def seconds(stamp):
+    """The probe records times as {secs, nsecs} (or plain seconds)."""
+    if isinstance(stamp, dict):
+        return stamp["secs"] + stamp["nsecs"] * 1e-9
+    return stamp
+
+
+def check_info(info, width=7, height=5):
+    assert (info["width"], info["height"]) == (width, height)
+    assert info["resolution"] == pytest.approx(RESOLUTION)
+    assert info["origin"]["position"]["x"] == pytest.approx(ORIGIN[0])
+    assert info["origin"]["position"]["y"] == pytest.approx(ORIGIN[1])
+    assert info["origin"]["orientation"]["w"] == pytest.approx(1.0)
+
+
+def test_serves_a_latched_map_to_late_subscribers(ros, tmp_path):
+    data, yaml_path = sample_map(tmp_path)
+    server = ros.start(["rosrun", "map_server", "map_server", str(yaml_path)])
+    ros.wait_for_topic("/map")
+    time.sleep(1.0)  # subscribe well after the only publication: latching must deliver it
+    before = time.time()
+    (record,) = ros.echo("/map")
+    grid = record["msg"]
+    assert grid["header"]["frame_id"] == "map"
+    stamp = seconds(grid["header"]["stamp"])
+    assert before - 30 < stamp <= before  # stamped with ROS time (wall here) at load
+    check_info(grid["info"])
+    # Row-major, bottom row first: the bottom wall comes first.
+    assert grid["data"] == data.reshape(-1).tolist()
+    assert grid["data"][:7] == [100] * 7
+    (meta,) = ros.echo("/map_metadata")
+    check_info(meta["msg"])
+    assert seconds(meta["msg"]["map_load_time"]) == pytest.approx(stamp)
+    assert server.poll() is None
+
+
+def test_static_map_service_answers(ros, tmp_path):
+    data, yaml_path = sample_map(tmp_path)
+    ros.start(["rosrun", "map_server", "map_server", str(yaml_path)])
+    ros.wait_for_service("/static_map")
+    done = ros.run(["rosservice", "call", "/static_map"])
+    grid = yaml.safe_load(done.stdout)["map"]
+    check_info(grid["info"])
+    assert grid["data"] == data.reshape(-1).tolist()
+    assert grid["header"]["frame_id"] == "map"
+
+
+def test_books_command_from_maps_folder(ros):
+    ros.start("rosrun map_server map_server willow.yaml", cwd=REPO / "maps")
+    ros.wait_for_topic("/map_metadata")
+    (meta,) = ros.echo("/map_metadata")
+    expected = map_io.load_map(REPO / "maps" / "willow.yaml")
+    info = meta["msg"]
+    assert (info["width"], info["height"]) == (expected.width, expected.height)
+    assert info["resolution"] == pytest.approx(expected.resolution)
+    assert ros.topics() >= {"/map", "/map_metadata", "/rosout"}
+
+
+def test_frame_id_parameter(ros, tmp_path):
+    _, yaml_path = sample_map(tmp_path)
+    ros.start(["rosrun", "map_server", "map_server", str(yaml_path), "_frame_id:=world"])
+    ros.wait_for_topic("/map")
+    (record,) = ros.echo("/map")
+    assert record["msg"]["header"]["frame_id"] == "world"
+
+
+def test_sim_time_stamp_follows_the_clock(ros, tmp_path):
+    _, yaml_path = sample_map(tmp_path)
+    ros.run(["rosparam", "set", "/use_sim_time", "true"])
+    ros.start(["rosrun", "map_server", "map_server", str(yaml_path)])
+    ros.wait_for_topic("/map")
+    probe = ros.probe(["/map"], count=2, timeout=30)
+    ros.start(["rostopic", "pub", "-r", "20", "/clock", "rosgraph_msgs/Clock", "clock: {secs: 42}"])
+    first, second = probe.wait(40)
+    assert seconds(first["msg"]["header"]["stamp"]) == 0  # no clock yet when it loaded
+    assert seconds(second["msg"]["header"]["stamp"]) == pytest.approx(42.0)
+    assert seconds(second["msg"]["info"]["map_load_time"]) == pytest.approx(42.0)
+
+
+def test_deprecated_image_resolution_form(ros, tmp_path):
+    data, yaml_path = sample_map(tmp_path)
+    ros.start(["rosrun", "map_server", "map_server", str(tmp_path / "lab.pgm"), "0.25"])
+    ros.wait_for_topic("/map")
+    (record,) = ros.echo("/map")
+    info = record["msg"]["info"]
+    assert info["resolution"] == pytest.approx(0.25)
+    assert info["origin"]["position"]["x"] == 0.0
+    assert record["msg"]["data"] == data.reshape(-1).tolist()
+
+
+def test_bad_yaml_is_a_clear_error_and_harms_nothing(ros, tmp_path):
+    _, good = sample_map(tmp_path)
+    server = ros.start(["rosrun", "map_server", "map_server", str(good)])
+    ros.wait_for_topic("/map")
+    bad = tmp_path / "broken.yaml"
+    bad.write_text("image: lab.pgm\nresolution: fine\norigin: [0, 0, 0]\nnegate: 0\n")
+    done = ros.run(["rosrun", "map_server", "map_server", str(bad)], check=False)
+    assert done.returncode != 0
+    assert "broken.yaml" in done.stderr and "missing key" in done.stderr
+    done = ros.run(["rosrun", "map_server", "map_server", "no_such_map.yaml"], check=False)
+    assert done.returncode != 0
+    assert "no_such_map.yaml: map YAML file not found" in done.stderr
+    # The running map_server (same node name) was not replaced by the failed ones.
+    time.sleep(0.5)
+    assert server.poll() is None
+    assert ros.echo("/map")[0]["msg"]["info"]["width"] == 7
