@@ -1,0 +1,35 @@
+#!/usr/bin/python3
+"""Publish keys on `keys` (std_msgs/String) as a keyboard would: KEY@SECONDS ... where the
+seconds count from the moment the `keys` subscriber is connected. `space` stands for " "."""
+
+import sys
+import time
+
+import rospy
+from std_msgs.msg import String
+
+
+def main():
+    plan = []
+    for arg in rospy.myargv()[1:]:
+        key, _, at = arg.rpartition("@")
+        plan.append((" " if key == "space" else key, float(at)))
+    rospy.init_node("send_keys", anonymous=True)
+    pub = rospy.Publisher("keys", String, queue_size=100)
+    deadline = time.monotonic() + 20
+    while pub.get_num_connections() == 0:
+        if time.monotonic() > deadline:
+            print("send_keys: nobody subscribes to keys", file=sys.stderr)
+            return 3
+        time.sleep(0.02)
+    time.sleep(0.3)  # the subscriber's side of the connection settles
+    start = time.monotonic()
+    for key, at in plan:
+        time.sleep(max(0.0, start + at - time.monotonic()))
+        pub.publish(key)
+    time.sleep(0.5)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
