@@ -1,0 +1,328 @@
+#!/usr/bin/python3
+"""Run rviz headless under Xvfb, take screenshots of it, and measure colours in them.
+
+Library use (tests):
+
+    with RvizSession(config, env, workdir) as rviz:
+        shot = rviz.wait_for(lambda img: count_rgb(rviz.view(img), RED) > 50, timeout=30)
+
+Command line (a person's quick look, against a running master):
+
+    tests/tools/rviz_screenshot.py CONFIG.rviz OUT.png [--wait 8] [--master http://host:11311]
+
+rviz runs as `xvfb-run -a -s '-screen 0 1280x800x24' rviz -d CONFIG`; screenshots are
+`import -window root` inside that X server.  The 3D view's rectangle is found from the
+X window tree (Ogre draws into its own native child window), so colour counts can be
+restricted to it and are not fooled by the panels' icons and text.
+"""
+
+import argparse
+import os
+import re
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+from PIL import Image
+
+SCREEN = (1280, 800)
+BACKGROUND = (48, 48, 48)  # rviz's default 3D background
+
+
+class RvizError(RuntimeError):
+    pass
+
+
+class RvizSession:
+    """One rviz inside its own Xvfb; screenshots on demand; everything killed on close."""
+
+    def __init__(self, config, env=None, workdir=None, screen=SCREEN, extra_args=()):
+        self.config = Path(config).resolve()
+        if not self.config.is_file():
+            raise FileNotFoundError(f"rviz config not found: {self.config}")
+        self.env = dict(env or os.environ)
+        self.workdir = Path(workdir or tempfile.mkdtemp(prefix="rviz-"))
+        self.workdir.mkdir(parents=True, exist_ok=True)
+        self.screen = screen
+        self.extra_args = list(extra_args)
+        self.proc = None
+        self.display = None
+        self.xauthority = None
+        self.rviz_pid = None
+        self._shots = 0
+        self._view = None
+
+    # -- life cycle ----------------------------------------------------------------
+    def __enter__(self):
+        self.start()
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def start(self, attempts=3):
+        """Start Xvfb + rviz; retry when `xvfb-run -a` loses a display-number race."""
+        for attempt in range(attempts):
+            try:
+                self._start_once(attempt)
+                return self
+            except RvizError:
+                self.close()
+                if attempt == attempts - 1:
+                    raise
+                time.sleep(1.0)
+        return self
+
+    def _start_once(self, attempt):
+        info = self.workdir / f"xvfb-{attempt}.info"
+        self.log_path = self.workdir / f"rviz-{attempt}.log"
+        # The inner shell reports the display and cookie file xvfb-run chose and its own
+        # pid, then becomes rviz (so that pid is rviz's).
+        inner = 'echo "$DISPLAY $XAUTHORITY $$" > "$0.tmp" && mv "$0.tmp" "$0" && exec "$@"'
+        width, height = self.screen
+        cmd = [
+            "xvfb-run",
+            "-a",
+            "-s",
+            f"-screen 0 {width}x{height}x24 -nolisten tcp",
+            "sh",
+            "-c",
+            inner,
+            str(info),
+            "rviz",
+            "-d",
+            str(self.config),
+            *self.extra_args,
+        ]
+        env = dict(self.env)
+        env.pop("DISPLAY", None)
+        with open(self.log_path, "w") as log:
+            self.proc = subprocess.Popen(
+                cmd,
+                stdout=log,
+                stderr=subprocess.STDOUT,
+                stdin=subprocess.DEVNULL,
+                env=env,
+                cwd=self.workdir,
+                start_new_session=True,
+            )
+        deadline = time.monotonic() + 20
+        while not info.exists():
+            if self.proc.poll() is not None:
+                raise RvizError("xvfb-run/rviz exited early:\n" + self.log())
+            if time.monotonic() > deadline:
+                raise RvizError("Xvfb did not come up within 20 s:\n" + self.log())
+            time.sleep(0.05)
+        self.display, self.xauthority, pid = info.read_text().split()
+        self.rviz_pid = int(pid)
+
+    def log(self):
+        try:
+            return Path(self.log_path).read_text(errors="replace")
+        except (AttributeError, OSError):
+            return ""
+
+    def close(self):
+        if self.proc is None:
+            return
+        # Stop rviz alone first, so xvfb-run's own clean-up stops Xvfb and removes its
+        # cookie directory; then make sure nothing of the process group is left.
+        if self.rviz_pid:
+            try:
+                os.kill(self.rviz_pid, signal.SIGTERM)
+            except ProcessLookupError:
+                pass
+        steps = ((None, 8),) if self.rviz_pid else ()
+        for sig, wait in steps + ((signal.SIGTERM, 5), (signal.SIGKILL, 3)):
+            try:
+                if sig is not None:
+                    os.killpg(self.proc.pid, sig)
+            except ProcessLookupError:
+                break
+            try:
+                self.proc.wait(timeout=wait)
+                break
+            except subprocess.TimeoutExpired:
+                continue
+        try:
+            os.killpg(self.proc.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        self.proc = None
+        self.rviz_pid = None
+
+    # -- screenshots -------------------------------------------------------------------
+    def _xenv(self):
+        env = dict(self.env)
+        env["DISPLAY"] = self.display
+        env["XAUTHORITY"] = self.xauthority
+        return env
+
+    def shot(self, out=None):
+        """Screenshot of the whole X screen; returns (path, RGB array)."""
+        if self.proc is None or self.proc.poll() is not None:
+            raise RvizError("rviz is not running:\n" + self.log())
+        self._shots += 1
+        out = Path(out or self.workdir / f"shot-{self._shots:03d}.png")
+        tmp = out.with_name(out.name + ".part.png")
+        done = subprocess.run(
+            ["import", "-window", "root", str(tmp)],
+            env=self._xenv(),
+            capture_output=True,
+            text=True,
+            timeout=20,
+        )
+        if done.returncode != 0:
+            raise RvizError(f"import failed: {done.stderr.strip()}")
+        os.replace(tmp, out)  # a reader never sees half a PNG
+        return out, load(out)
+
+    def view_rect(self):
+        """(x, y, width, height) of the 3D render window on the screen."""
+        if self._view is None:
+            self._view = ogre_windows(self._xenv())[0]
+        return self._view
+
+    def panels(self, img):
+        """The pixels of each Image display's panel (every render window but the 3D view)."""
+        return [crop(img, rect) for rect in ogre_windows(self._xenv())[1:]]
+
+    def view(self, img):
+        """The 3D view's pixels of a screenshot."""
+        return crop(img, self.view_rect())
+
+    def wait_for(self, predicate, timeout=30, interval=0.5, min_wait=2.0, out=None):
+        """Screenshot until predicate(img) holds; returns (path, img) of the last shot.
+
+        Raises AssertionError (naming the last screenshot) when it never holds.
+        """
+        time.sleep(min_wait)
+        deadline = time.monotonic() + timeout
+        path = img = None
+        while True:
+            path, img = self.shot(out)
+            try:
+                if self._view is None:
+                    self.view_rect()
+                if predicate(img):
+                    return path, img
+            except RvizError:
+                pass  # the render window is not mapped yet
+            if time.monotonic() > deadline:
+                raise AssertionError(f"rviz never showed the expected picture; last: {path}")
+            time.sleep(interval)
+
+
+# An xwininfo tree line:  0x600004 (has no name): ()  900x709+16+0  +364+62
+_WINDOW = re.compile(r"^\s+0x[0-9a-f]+ \(has no name\): \(\)\s+(\d+)x(\d+)\S*\s+\+(-?\d+)\+(-?\d+)")
+
+
+def ogre_windows(xenv):
+    """(x, y, width, height) of rviz's render windows, largest (the 3D view) first.
+
+    Ogre draws the 3D view and each Image display into native X windows that have no
+    name; Qt's own windows are all named after the application.
+    """
+    done = subprocess.run(
+        ["xwininfo", "-root", "-tree"], env=xenv, capture_output=True, text=True, timeout=10
+    )
+    if done.returncode != 0:
+        raise RvizError("xwininfo failed: " + done.stderr.strip())
+    rects = []
+    for line in done.stdout.splitlines():
+        match = _WINDOW.match(line)
+        if match:
+            w, h, x, y = (int(v) for v in match.groups())
+            if w > 50 and h > 50:
+                rects.append((x, y, w, h))
+    if not rects:
+        raise RvizError("no render window found in the X tree:\n" + done.stdout)
+    return sorted(rects, key=lambda r: r[2] * r[3], reverse=True)
+
+
+# -- pixel analysis ---------------------------------------------------------------------
+def load(path):
+    """PNG/PPM → H×W×3 uint8 array."""
+    with Image.open(path) as image:
+        return np.asarray(image.convert("RGB"), dtype=np.uint8)
+
+
+def crop(img, rect):
+    x, y, w, h = rect
+    return img[y : y + h, x : x + w]
+
+
+def count_rgb(img, rgb, tol=12):
+    """Pixels within `tol` (per channel) of the colour `rgb`."""
+    diff = np.abs(img.astype(np.int16) - np.array(rgb, dtype=np.int16))
+    return int(np.count_nonzero(diff.max(axis=2) <= tol))
+
+
+def hsv(img):
+    """Hue (degrees), saturation and value (0..1) arrays of an RGB image."""
+    rgb = img.astype(np.float32) / 255.0
+    mx = rgb.max(axis=2)
+    mn = rgb.min(axis=2)
+    span = mx - mn
+    sat = np.where(mx > 0, span / np.maximum(mx, 1e-6), 0.0)
+    r, g, b = rgb[..., 0], rgb[..., 1], rgb[..., 2]
+    safe = np.maximum(span, 1e-6)
+    hue = np.select(
+        [mx == r, mx == g],
+        [((g - b) / safe) % 6.0, (b - r) / safe + 2.0],
+        (r - g) / safe + 4.0,
+    )
+    hue = np.where(span > 0, hue * 60.0, 0.0)
+    return hue, sat, mx
+
+
+def count_hsv(img, hue, sat=(0.0, 1.0), val=(0.0, 1.0)):
+    """Pixels whose hue lies in [lo, hi] degrees (wrapping if lo > hi), sat and value in range."""
+    h, s, v = hsv(img)
+    lo, hi = hue
+    in_hue = (h >= lo) & (h <= hi) if lo <= hi else (h >= lo) | (h <= hi)
+    mask = in_hue & (s >= sat[0]) & (s <= sat[1]) & (v >= val[0]) & (v <= val[1])
+    return int(np.count_nonzero(mask))
+
+
+def fraction_rgb(img, rgb, tol=12):
+    return count_rgb(img, rgb, tol) / float(img.shape[0] * img.shape[1])
+
+
+def is_blank(img, tol=6):
+    """True when the picture is one flat colour (nothing drawn)."""
+    return int(img.max()) - int(img.min()) <= tol
+
+
+def screenshot(config, out, env=None, wait=8.0, workdir=None):
+    """Start rviz, wait `wait` seconds, save one screenshot to `out`, stop rviz."""
+    with RvizSession(config, env, workdir) as rviz:
+        time.sleep(wait)
+        path, _ = rviz.shot(out)
+    return path
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("config", help="rviz config (.rviz)")
+    parser.add_argument("out", help="PNG to write")
+    parser.add_argument("--wait", type=float, default=8.0, help="seconds before the shot")
+    parser.add_argument("--master", help="ROS_MASTER_URI (default: the environment's)")
+    args = parser.parse_args(argv)
+    env = dict(os.environ)
+    if args.master:
+        env["ROS_MASTER_URI"] = args.master
+    try:
+        print(screenshot(args.config, args.out, env, args.wait))
+    except (RvizError, FileNotFoundError) as err:
+        print(f"rviz_screenshot: {err}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
