@@ -4,7 +4,7 @@
 Library use (tests):
 
     with RvizSession(config, env, workdir) as rviz:
-        shot = rviz.wait_for(lambda img: count_rgb(rviz.view(img), RED) > 50, timeout=30)
+        path, img = rviz.settle(lambda img: count_rgb(rviz.view(img), (255, 0, 255)) > 50)
 
 Command line (a person's quick look, against a running master):
 
@@ -195,25 +195,23 @@ class RvizSession:
         """The 3D view's pixels of a screenshot."""
         return crop(img, self.view_rect())
 
-    def wait_for(self, predicate, timeout=30, interval=0.5, min_wait=2.0, out=None):
-        """Screenshot until predicate(img) holds; returns (path, img) of the last shot.
+    def settle(self, predicate, timeout=30, interval=0.5, min_wait=2.0, out=None):
+        """Screenshot until predicate(img) holds or `timeout` s pass.
 
-        Raises AssertionError (naming the last screenshot) when it never holds.
+        Returns (path, img) of the first shot that satisfies the predicate, else of the
+        last one: callers then assert on it and name the file in their message.
         """
         time.sleep(min_wait)
         deadline = time.monotonic() + timeout
-        path = img = None
         while True:
             path, img = self.shot(out)
             try:
-                if self._view is None:
-                    self.view_rect()
                 if predicate(img):
                     return path, img
             except RvizError:
                 pass  # the render window is not mapped yet
             if time.monotonic() > deadline:
-                raise AssertionError(f"rviz never showed the expected picture; last: {path}")
+                return path, img
             time.sleep(interval)
 
 
@@ -256,10 +254,14 @@ def crop(img, rect):
     return img[y : y + h, x : x + w]
 
 
-def count_rgb(img, rgb, tol=12):
+def mask_rgb(img, rgb, tol=12):
     """Pixels within `tol` (per channel) of the colour `rgb`."""
     diff = np.abs(img.astype(np.int16) - np.array(rgb, dtype=np.int16))
-    return int(np.count_nonzero(diff.max(axis=2) <= tol))
+    return diff.max(axis=2) <= tol
+
+
+def count_rgb(img, rgb, tol=12):
+    return int(np.count_nonzero(mask_rgb(img, rgb, tol)))
 
 
 def hsv(img):
@@ -280,13 +282,32 @@ def hsv(img):
     return hue, sat, mx
 
 
-def count_hsv(img, hue, sat=(0.0, 1.0), val=(0.0, 1.0)):
+def mask_hsv(img, hue, sat=(0.0, 1.0), val=(0.0, 1.0)):
     """Pixels whose hue lies in [lo, hi] degrees (wrapping if lo > hi), sat and value in range."""
     h, s, v = hsv(img)
     lo, hi = hue
     in_hue = (h >= lo) & (h <= hi) if lo <= hi else (h >= lo) | (h <= hi)
-    mask = in_hue & (s >= sat[0]) & (s <= sat[1]) & (v >= val[0]) & (v <= val[1])
-    return int(np.count_nonzero(mask))
+    return in_hue & (s >= sat[0]) & (s <= sat[1]) & (v >= val[0]) & (v <= val[1])
+
+
+def count_hsv(img, hue, sat=(0.0, 1.0), val=(0.0, 1.0)):
+    return int(np.count_nonzero(mask_hsv(img, hue, sat, val)))
+
+
+def centroid(mask):
+    """(x, y) mean position of a mask's pixels, or None when it is empty."""
+    ys, xs = np.nonzero(mask)
+    if len(xs) == 0:
+        return None
+    return float(xs.mean()), float(ys.mean())
+
+
+def extent(mask):
+    """(width, height) of a mask's bounding box in pixels (0, 0 when empty)."""
+    ys, xs = np.nonzero(mask)
+    if len(xs) == 0:
+        return 0, 0
+    return int(xs.max() - xs.min() + 1), int(ys.max() - ys.min() + 1)
 
 
 def fraction_rgb(img, rgb, tol=12):
