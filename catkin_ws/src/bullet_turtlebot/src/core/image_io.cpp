@@ -1,0 +1,119 @@
+#include "bullet_turtlebot/image_io.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace bullet_turtlebot {
+namespace {
+
+// Next header token, skipping whitespace and '#' comments.
+std::string header_token(std::istream& in) {
+  std::string token;
+  int c;
+  while ((c = in.get()) != EOF) {
+    if (c == '#') {
+      while ((c = in.get()) != EOF && c != '\n') {
+      }
+      continue;
+    }
+    if (std::isspace(c)) {
+      if (!token.empty()) return token;
+      continue;
+    }
+    token.push_back(static_cast<char>(c));
+  }
+  return token;
+}
+
+int header_int(std::istream& in, const char* what) {
+  const std::string token = header_token(in);
+  try {
+    size_t used = 0;
+    const int value = std::stoi(token, &used);
+    if (used == token.size() && value > 0) return value;
+  } catch (const std::exception&) {
+  }
+  throw ImageError(std::string("bad ") + what + " in the image header: '" + token + "'");
+}
+
+}  // namespace
+
+GreyImage read_pnm(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ImageError(std::string("cannot open: ") + std::strerror(errno));
+  const std::string magic = header_token(in);
+  if (magic != "P2" && magic != "P5" && magic != "P3" && magic != "P6") {
+    throw ImageError("not a PGM/PPM image (magic '" + magic.substr(0, 8) +
+                     "'; supported: P2, P5, P3, P6)");
+  }
+  const bool binary = magic == "P5" || magic == "P6";
+  const int channels = (magic == "P3" || magic == "P6") ? 3 : 1;
+  GreyImage image;
+  image.width = header_int(in, "width");
+  image.height = header_int(in, "height");
+  const int maxval = header_int(in, "maxval");
+  if (maxval > 65535) throw ImageError("maxval above 65535");
+  if (static_cast<long long>(image.width) * image.height > 400LL * 1000 * 1000) {
+    throw ImageError("image too large");
+  }
+  const size_t count = static_cast<size_t>(image.width) * image.height;
+  image.pixels.resize(count);
+  const int bytes = maxval > 255 ? 2 : 1;
+  std::vector<unsigned char> raw;
+  if (binary) {
+    raw.resize(count * channels * bytes);
+    in.read(reinterpret_cast<char*>(raw.data()), static_cast<std::streamsize>(raw.size()));
+    if (static_cast<size_t>(in.gcount()) != raw.size()) {
+      throw ImageError("truncated pixel data (" + std::to_string(in.gcount()) + " of " +
+                       std::to_string(raw.size()) + " bytes)");
+    }
+  }
+  for (size_t i = 0; i < count; ++i) {
+    long sum = 0;
+    for (int c = 0; c < channels; ++c) {
+      long v;
+      if (binary) {
+        const size_t k = (i * channels + c) * bytes;
+        v = bytes == 2 ? (raw[k] << 8) | raw[k + 1] : raw[k];
+      } else if (!(in >> v)) {
+        throw ImageError("truncated pixel data");
+      }
+      if (v < 0 || v > maxval) throw ImageError("pixel value out of range");
+      sum += v;
+    }
+    const double mean = static_cast<double>(sum) / channels;
+    image.pixels[i] = static_cast<std::uint8_t>(mean * 255.0 / maxval + 0.5);
+  }
+  return image;
+}
+
+void write_text_atomic(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    if (!out) throw ImageError("cannot write " + tmp + ": " + std::strerror(errno));
+    out << text;
+    out.flush();
+    if (!out) throw ImageError("write failed for " + tmp);
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const std::string error = std::strerror(errno);
+    std::remove(tmp.c_str());
+    throw ImageError("cannot rename " + tmp + " to " + path + ": " + error);
+  }
+}
+
+void write_pgm_atomic(const std::string& path, const GreyImage& image) {
+  std::ostringstream out;
+  out << "P5\n# CREATOR: bullet_turtlebot\n" << image.width << " " << image.height << "\n255\n";
+  out.write(reinterpret_cast<const char*>(image.pixels.data()),
+            static_cast<std::streamsize>(image.pixels.size()));
+  write_text_atomic(path, out.str());
+}
+
+}  // namespace bullet_turtlebot

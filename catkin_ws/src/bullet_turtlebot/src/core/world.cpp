@@ -1,0 +1,306 @@
+#include "bullet_turtlebot/world.hpp"
+
+#include <btBulletCollisionCommon.h>
+
+#include <cmath>
+#include <limits>
+
+#include "bullet_turtlebot/grid_boxes.hpp"
+
+namespace bullet_turtlebot {
+namespace {
+
+btVector3 bt(const Eigen::Vector3d& v) { return btVector3(btScalar(v.x()), btScalar(v.y()), btScalar(v.z())); }
+
+bool intersect_box(const Solid& s, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
+                   double max_distance, double* distance, Eigen::Vector3d* normal) {
+  const double c = std::cos(s.yaw), sn = std::sin(s.yaw);
+  const Eigen::Vector3d rel = origin - s.center;
+  // World to box frame: rotate by -yaw.
+  const double o[3] = {c * rel.x() + sn * rel.y(), -sn * rel.x() + c * rel.y(), rel.z()};
+  const double d[3] = {c * dir.x() + sn * dir.y(), -sn * dir.x() + c * dir.y(), dir.z()};
+  double t_enter = -std::numeric_limits<double>::infinity();
+  double t_exit = std::numeric_limits<double>::infinity();
+  int axis = -1;
+  double sign = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const double h = s.half[i];
+    if (std::abs(d[i]) < 1e-12) {
+      if (o[i] < -h || o[i] > h) return false;
+      continue;
+    }
+    double t1 = (-h - o[i]) / d[i];
+    double t2 = (h - o[i]) / d[i];
+    if (t1 > t2) std::swap(t1, t2);
+    if (t1 > t_enter) {
+      t_enter = t1;
+      axis = i;
+      sign = d[i] > 0 ? -1.0 : 1.0;
+    }
+    if (t2 < t_exit) t_exit = t2;
+    if (t_enter > t_exit) return false;
+  }
+  if (axis < 0 || t_enter < 0.0 || t_enter > max_distance) return false;  // inside, behind or far
+  *distance = t_enter;
+  Eigen::Vector3d local = Eigen::Vector3d::Zero();
+  local[axis] = sign;
+  *normal = Eigen::Vector3d(c * local.x() - sn * local.y(), sn * local.x() + c * local.y(), local.z());
+  return true;
+}
+
+bool intersect_cylinder(const Solid& s, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
+                        double max_distance, double* distance, Eigen::Vector3d* normal) {
+  const double r = s.half.x();
+  const double bottom = s.center.z() - s.half.z();
+  const double top = s.center.z() + s.half.z();
+  const double ox = origin.x() - s.center.x(), oy = origin.y() - s.center.y();
+  const double c = ox * ox + oy * oy - r * r;
+  if (c <= 0 && origin.z() >= bottom && origin.z() <= top) return false;  // inside
+  double best = std::numeric_limits<double>::infinity();
+  const double a = dir.x() * dir.x() + dir.y() * dir.y();
+  if (a > 1e-12) {
+    const double b = 2.0 * (ox * dir.x() + oy * dir.y());
+    const double disc = b * b - 4 * a * c;
+    if (disc >= 0) {
+      const double t = (-b - std::sqrt(disc)) / (2 * a);
+      const double z = origin.z() + t * dir.z();
+      if (t >= 0 && z >= bottom && z <= top) {
+        best = t;
+        *normal = Eigen::Vector3d((ox + t * dir.x()) / r, (oy + t * dir.y()) / r, 0.0);
+      }
+    }
+  }
+  for (const double cap : {top, bottom}) {
+    if (std::abs(dir.z()) < 1e-12) break;
+    const double t = (cap - origin.z()) / dir.z();
+    if (t < 0 || t >= best) continue;
+    const double px = ox + t * dir.x(), py = oy + t * dir.y();
+    if (px * px + py * py <= r * r) {
+      best = t;
+      *normal = Eigen::Vector3d(0, 0, cap == top ? 1.0 : -1.0);
+    }
+  }
+  if (best > max_distance) return false;
+  *distance = best;
+  return true;
+}
+
+// Broadphase ray walk over Bullet's dynamic AABB tree, exact intersection per candidate.
+struct RayWalker : public btBroadphaseRayCallback {
+  const std::vector<Solid>* solids = nullptr;
+  Eigen::Vector3d origin, dir;
+  double best = 0.0;
+  int best_index = -1;
+  Eigen::Vector3d best_normal;
+
+  bool process(const btBroadphaseProxy* proxy) override {
+    const auto* object = static_cast<const btCollisionObject*>(proxy->m_clientObject);
+    const int index = object->getUserIndex();
+    double t;
+    Eigen::Vector3d n;
+    if (intersect_solid((*solids)[index], origin, dir, best, &t, &n) && t < best) {
+      best = t;
+      best_index = index;
+      best_normal = n;
+    }
+    return true;
+  }
+};
+
+// Closest sweep hit, ignoring contacts the motion leaves (so a touching robot can back off).
+struct SweepCallback : public btCollisionWorld::ClosestConvexResultCallback {
+  btVector3 motion;
+  SweepCallback(const btVector3& from, const btVector3& to)
+      : ClosestConvexResultCallback(from, to), motion(to - from) {}
+  btScalar addSingleResult(btCollisionWorld::LocalConvexResult& result, bool normal_in_world) override {
+    btVector3 n = normal_in_world ? result.m_hitNormalLocal
+                                  : result.m_hitCollisionObject->getWorldTransform().getBasis() *
+                                        result.m_hitNormalLocal;
+    n.setZ(0);
+    if (n.dot(motion) >= 0) return m_closestHitFraction;
+    return ClosestConvexResultCallback::addSingleResult(result, normal_in_world);
+  }
+};
+
+struct PenetrationCallback : public btCollisionWorld::ContactResultCallback {
+  bool penetrating = false;
+  btScalar addSingleResult(btManifoldPoint& cp, const btCollisionObjectWrapper*, int, int,
+                           const btCollisionObjectWrapper*, int, int) override {
+    if (cp.getDistance() < -1e-3) penetrating = true;
+    return 0;
+  }
+};
+
+}  // namespace
+
+bool intersect_solid(const Solid& solid, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
+                     double max_distance, double* distance, Eigen::Vector3d* normal) {
+  return solid.kind == Solid::kBox ? intersect_box(solid, origin, dir, max_distance, distance, normal)
+                                   : intersect_cylinder(solid, origin, dir, max_distance, distance, normal);
+}
+
+std::vector<Solid> build_solids(const WorldSpec& spec) {
+  std::vector<Solid> solids;
+  const GridSpec& grid = spec.grid;
+  if (grid.width > 0 && grid.height > 0) {
+    const double res = grid.resolution;
+    const double c = std::cos(grid.origin.yaw), s = std::sin(grid.origin.yaw);
+    for (const CellRect& r : merge_cells(grid.occupied, grid.width, grid.height)) {
+      // Image row 0 is the top of the map: y grows with decreasing row.
+      const double mx = (r.col + r.width / 2.0) * res;
+      const double my = (grid.height - r.row - r.height / 2.0) * res;
+      Solid solid;
+      solid.kind = Solid::kBox;
+      solid.center = Eigen::Vector3d(grid.origin.x + c * mx - s * my, grid.origin.y + s * mx + c * my,
+                                     spec.wall_height / 2);
+      solid.yaw = grid.origin.yaw;
+      solid.half = Eigen::Vector3d(r.width * res / 2, r.height * res / 2, spec.wall_height / 2);
+      solid.color = spec.wall_color;
+      solids.push_back(solid);
+    }
+  }
+  for (const BoxSpec& b : spec.boxes) {
+    Solid solid;
+    solid.kind = Solid::kBox;
+    solid.center = Eigen::Vector3d(b.pose.x, b.pose.y, b.size_z / 2);
+    solid.yaw = b.pose.yaw;
+    solid.half = Eigen::Vector3d(b.size_x / 2, b.size_y / 2, b.size_z / 2);
+    solid.color = b.color;
+    solids.push_back(solid);
+  }
+  for (const CylinderSpec& cyl : spec.cylinders) {
+    Solid solid;
+    solid.kind = Solid::kCylinder;
+    solid.center = Eigen::Vector3d(cyl.x, cyl.y, cyl.height / 2);
+    solid.half = Eigen::Vector3d(cyl.radius, cyl.radius, cyl.height / 2);
+    solid.color = cyl.color;
+    solids.push_back(solid);
+  }
+  return solids;
+}
+
+struct World::Bullet {
+  btDefaultCollisionConfiguration config;
+  btCollisionDispatcher dispatcher{&config};
+  btDbvtBroadphase broadphase;
+  btCollisionWorld world{&dispatcher, &broadphase, &config};
+  std::vector<std::unique_ptr<btCollisionShape>> shapes;
+  std::vector<std::unique_ptr<btCollisionObject>> objects;
+};
+
+World::World(const WorldSpec& spec) : solids_(build_solids(spec)), bullet_(std::make_unique<Bullet>()) {
+  bool first = true;
+  for (size_t i = 0; i < solids_.size(); ++i) {
+    const Solid& s = solids_[i];
+    std::unique_ptr<btCollisionShape> shape;
+    if (s.kind == Solid::kBox) {
+      shape = std::make_unique<btBoxShape>(bt(s.half));
+    } else {
+      shape = std::make_unique<btCylinderShapeZ>(bt(s.half));
+    }
+    auto object = std::make_unique<btCollisionObject>();
+    btTransform pose;
+    pose.setIdentity();
+    pose.setOrigin(bt(s.center));
+    pose.setRotation(btQuaternion(btVector3(0, 0, 1), btScalar(s.yaw)));
+    object->setWorldTransform(pose);
+    object->setCollisionShape(shape.get());
+    object->setUserIndex(static_cast<int>(i));
+    object->setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
+    bullet_->world.addCollisionObject(object.get(), btBroadphaseProxy::StaticFilter,
+                                      btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+    btVector3 lo, hi;
+    shape->getAabb(pose, lo, hi);
+    if (first) {
+      min_ = Eigen::Vector2d(lo.x(), lo.y());
+      max_ = Eigen::Vector2d(hi.x(), hi.y());
+      first = false;
+    } else {
+      min_ = min_.cwiseMin(Eigen::Vector2d(lo.x(), lo.y()));
+      max_ = max_.cwiseMax(Eigen::Vector2d(hi.x(), hi.y()));
+    }
+    bullet_->shapes.push_back(std::move(shape));
+    bullet_->objects.push_back(std::move(object));
+  }
+  bullet_->world.updateAabbs();
+  bullet_->broadphase.optimize();
+}
+
+World::~World() {
+  for (auto& object : bullet_->objects) bullet_->world.removeCollisionObject(object.get());
+}
+
+bool World::raycast(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, double max_distance,
+                    RayHit* hit, bool include_floor) const {
+  RayWalker walker;
+  walker.solids = &solids_;
+  walker.origin = origin;
+  walker.dir = dir;
+  walker.best = max_distance;
+  for (int i = 0; i < 3; ++i) {
+    walker.m_rayDirectionInverse[i] = dir[i] == 0.0 ? btScalar(BT_LARGE_FLOAT) : btScalar(1.0 / dir[i]);
+    walker.m_signs[i] = walker.m_rayDirectionInverse[i] < 0.0;
+  }
+  walker.m_lambda_max = btScalar(max_distance);
+  bullet_->broadphase.rayTest(bt(origin), bt(origin + dir * max_distance), walker);
+
+  bool found = walker.best_index >= 0;
+  if (found) {
+    hit->distance = walker.best;
+    hit->normal = walker.best_normal;
+    hit->solid = walker.best_index;
+    hit->color = solids_[walker.best_index].color;
+  }
+  if (include_floor && dir.z() < -1e-12 && origin.z() > 0) {
+    const double t = -origin.z() / dir.z();
+    if (t <= walker.best) {
+      found = true;
+      hit->distance = t;
+      hit->normal = Eigen::Vector3d::UnitZ();
+      hit->solid = -1;
+      const Eigen::Vector3d p = origin + t * dir;
+      const bool dark = (static_cast<long>(std::floor(p.x())) + static_cast<long>(std::floor(p.y()))) & 1;
+      hit->color = dark ? Color{0.55f, 0.55f, 0.5f} : Color{0.68f, 0.68f, 0.62f};
+    }
+  }
+  return found;
+}
+
+SweepResult World::sweep_cylinder(const Eigen::Vector2d& from, const Eigen::Vector2d& to, double radius,
+                                  double height, double clearance) const {
+  SweepResult result;
+  if ((to - from).squaredNorm() < 1e-18) return result;
+  btCylinderShapeZ shape{btVector3(btScalar(radius), btScalar(radius), btScalar(height / 2))};
+  const btScalar z = btScalar(clearance + height / 2);
+  btTransform a, b;
+  a.setIdentity();
+  b.setIdentity();
+  a.setOrigin(btVector3(btScalar(from.x()), btScalar(from.y()), z));
+  b.setOrigin(btVector3(btScalar(to.x()), btScalar(to.y()), z));
+  SweepCallback callback(a.getOrigin(), b.getOrigin());
+  bullet_->world.convexSweepTest(&shape, a, b, callback);
+  if (callback.hasHit()) {
+    result.hit = true;
+    result.fraction = callback.m_closestHitFraction;
+    Eigen::Vector2d n(callback.m_hitNormalWorld.x(), callback.m_hitNormalWorld.y());
+    if (n.norm() > 1e-9) n.normalize();
+    result.normal = n;
+    result.contact = Eigen::Vector2d(callback.m_hitPointWorld.x(), callback.m_hitPointWorld.y());
+  }
+  return result;
+}
+
+bool World::cylinder_collides(const Eigen::Vector2d& at, double radius, double height, double clearance) const {
+  btCylinderShapeZ shape{btVector3(btScalar(radius), btScalar(radius), btScalar(height / 2))};
+  btCollisionObject probe;
+  btTransform pose;
+  pose.setIdentity();
+  pose.setOrigin(btVector3(btScalar(at.x()), btScalar(at.y()), btScalar(clearance + height / 2)));
+  probe.setWorldTransform(pose);
+  probe.setCollisionShape(&shape);
+  PenetrationCallback callback;
+  bullet_->world.contactTest(&probe, callback);
+  return callback.penetrating;
+}
+
+}  // namespace bullet_turtlebot

@@ -1,0 +1,77 @@
+// simulator: the Turtlebot simulator node (stands in for Gazebo and Stage).
+#include <ros/ros.h>
+
+#include <cstdio>
+#include <memory>
+
+#include "bullet_turtlebot/world_spec.hpp"
+#include "ros_sim.hpp"
+
+namespace {
+
+// A bare name ("maze") means a shipped world; anything with a slash or ".yaml" is a path.
+std::string resolve_world(const std::string& world, const std::string& worlds_dir) {
+  const bool is_path = world.find('/') != std::string::npos ||
+                       (world.size() > 5 && world.compare(world.size() - 5, 5, ".yaml") == 0);
+  return is_path ? world : worlds_dir + "/" + world + ".yaml";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "simulator");
+  ros::NodeHandle nh;
+  ros::NodeHandle pnh("~");
+  namespace bt = bullet_turtlebot;
+
+  std::string world_name, worlds_dir;
+  pnh.param<std::string>("world", world_name, "playground");
+  pnh.param<std::string>("worlds_dir", worlds_dir, BULLET_TURTLEBOT_WORLDS_DIR);
+  const std::string world_path = resolve_world(world_name, worlds_dir);
+
+  bt::WorldSpec spec;
+  try {
+    spec = bt::load_world_file(world_path);
+  } catch (const bt::WorldFileError& e) {
+    ROS_FATAL("%s", e.what());
+    std::fprintf(stderr, "simulator: %s\n", e.what());
+    return 2;
+  }
+
+  bt::SimulationConfig config;
+  int seed = 1;
+  pnh.param("seed", seed, seed);
+  config.seed = static_cast<std::uint64_t>(seed);
+  pnh.param("odom_noise", config.odometry.enabled, true);
+  pnh.param("odom_linear_noise", config.odometry.linear, config.odometry.linear);
+  pnh.param("odom_angular_noise", config.odometry.angular, config.odometry.angular);
+  pnh.param("odom_angular_per_linear_noise", config.odometry.angular_per_linear, config.odometry.angular_per_linear);
+  pnh.param("odom_yaw_scale_error", config.odometry.yaw_scale, config.odometry.yaw_scale);
+  pnh.param("watchdog", config.watchdog, config.watchdog);
+  pnh.param("max_linear", config.limits.max_linear, config.limits.max_linear);
+  pnh.param("max_angular", config.limits.max_angular, config.limits.max_angular);
+  pnh.param("accel_linear", config.limits.accel_linear, config.limits.accel_linear);
+  pnh.param("accel_angular", config.limits.accel_angular, config.limits.accel_angular);
+  double rate = 100.0;
+  pnh.param("physics_rate", rate, rate);
+  if (!(rate >= 10.0 && rate <= 10000.0)) {
+    ROS_WARN("~physics_rate must lie in [10, 10000] Hz; using 100");
+    rate = 100.0;
+  }
+  config.step = 1.0 / rate;
+
+  bt::Pose2D start = spec.has_start ? spec.start : bt::Pose2D{};
+  pnh.param("x", start.x, start.x);
+  pnh.param("y", start.y, start.y);
+  pnh.param("yaw", start.yaw, start.yaw);
+
+  try {
+    auto world = std::make_shared<const bt::World>(spec);
+    bt::RosSimulator simulator(nh, pnh, world, config, start, world_path);
+    return simulator.run();
+  } catch (const std::invalid_argument& e) {
+    ROS_FATAL("world file '%s': %s", world_path.c_str(), e.what());
+    std::fprintf(stderr, "simulator: world file '%s': %s\n", world_path.c_str(), e.what());
+    return 2;
+  }
+}

@@ -1,0 +1,69 @@
+// world_to_map: writes a world's ground-truth occupancy grid as a map_server map.
+//   rosrun bullet_turtlebot world_to_map <world name|file.yaml> [-f NAME] [--resolution R]
+//                                          [--margin M] [--min-height H]
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "bullet_turtlebot/occupancy_export.hpp"
+#include "bullet_turtlebot/world_spec.hpp"
+
+namespace {
+
+int usage(const char* problem) {
+  std::fprintf(stderr,
+               "world_to_map: %s\nusage: world_to_map <world name|file.yaml> [-f NAME] [--resolution R] "
+               "[--margin M] [--min-height H]\n  writes NAME.pgm and NAME.yaml (default NAME: map)\n",
+               problem);
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  namespace bt = bullet_turtlebot;
+  std::string world, out = "map";
+  double resolution = 0.05, margin = 0.5, min_height = 0.0;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&](const char* what) -> const char* {
+      if (i + 1 >= argc) return nullptr;
+      (void)what;
+      return argv[++i];
+    };
+    if (arg == "-h" || arg == "--help") return usage("help"), 0;
+    if (arg == "-f") {
+      const char* v = value("-f");
+      if (!v) return usage("-f needs a name");
+      out = v;
+    } else if (arg == "--resolution" || arg == "--margin" || arg == "--min-height") {
+      const char* v = value(arg.c_str());
+      char* end = nullptr;
+      const double number = v ? std::strtod(v, &end) : 0.0;
+      if (!v || *end != '\0') return usage((arg + " needs a number").c_str());
+      (arg == "--resolution" ? resolution : arg == "--margin" ? margin : min_height) = number;
+    } else if (!arg.empty() && arg[0] == '-') {
+      return usage(("unknown option " + arg).c_str());
+    } else if (world.empty()) {
+      world = arg;
+    } else {
+      return usage("more than one world given");
+    }
+  }
+  if (world.empty()) return usage("no world given");
+  if (!(resolution > 0)) return usage("--resolution must be > 0");
+  if (world.find('/') == std::string::npos && world.find(".yaml") == std::string::npos) {
+    world = std::string(BULLET_TURTLEBOT_WORLDS_DIR) + "/" + world + ".yaml";
+  }
+  try {
+    const bt::World w(bt::load_world_file(world));
+    const bt::MapImage map = bt::rasterize_world(w, resolution, margin, min_height);
+    bt::write_map(map, out);
+    std::printf("wrote %s.yaml and %s.pgm: %dx%d cells at %g m, origin (%g, %g)\n", out.c_str(), out.c_str(),
+                map.image.width, map.image.height, resolution, map.origin.x, map.origin.y);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "world_to_map: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

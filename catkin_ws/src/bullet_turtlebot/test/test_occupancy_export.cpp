@@ -1,0 +1,46 @@
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "bullet_turtlebot/occupancy_export.hpp"
+#include "bullet_turtlebot/world_spec.hpp"
+
+using namespace bullet_turtlebot;
+
+TEST(OccupancyExport, BoxRasterisedInMapServerFormat) {
+  WorldSpec spec;
+  BoxSpec box;
+  box.pose = Pose2D{1.0, 0.5, 0.0};
+  box.size_x = 1.0;
+  box.size_y = 0.5;
+  spec.boxes.push_back(box);
+  World world(spec);
+  const MapImage map = rasterize_world(world, 0.1, 0.5);
+  EXPECT_NEAR(map.origin.x, 0.0, 1e-6);
+  EXPECT_NEAR(map.origin.y, -0.25, 1e-6);
+  EXPECT_EQ(map.image.width, 20);
+  EXPECT_EQ(map.image.height, 15);
+  int occupied = 0;
+  for (auto p : map.image.pixels) {
+    EXPECT_TRUE(p == 0 || p == 254);
+    occupied += p == 0;
+  }
+  EXPECT_EQ(occupied, 10 * 5);
+  char tmpl[] = "/tmp/bt_export_XXXXXX";
+  const std::string base = std::string(mkdtemp(tmpl)) + "/truth";
+  write_map(map, base);
+  std::ifstream yaml(base + ".yaml");
+  std::stringstream text;
+  text << yaml.rdbuf();
+  EXPECT_NE(text.str().find("image: truth.pgm"), std::string::npos);
+  EXPECT_NE(text.str().find("negate: 0"), std::string::npos);
+  EXPECT_NE(text.str().find("occupied_thresh: 0.65"), std::string::npos);
+  EXPECT_NE(text.str().find("free_thresh: 0.196"), std::string::npos);
+  // Round trip: the written map is a valid world whose walls cover the box.
+  const WorldSpec again = load_world_file(base + ".yaml");
+  int cells = 0;
+  for (auto c : again.grid.occupied) cells += c;
+  EXPECT_EQ(cells, 50);
+}
