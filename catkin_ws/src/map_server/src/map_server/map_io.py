@@ -15,54 +15,70 @@ colour averaged). Image row 0 is the top of the map; an OccupancyMap's row 0 is 
 bottom, as in nav_msgs/OccupancyGrid.
 """
 
-import json
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
-import yaml
 
 from map_server import pgm
 from map_server.atomic import write_files_atomically
+from map_server.errors import MapError, MapFileNotFoundError, MapImageError, MapYamlError
+from map_server.map_image import (
+    DEFAULT_SAVE_FREE,
+    DEFAULT_SAVE_OCCUPIED,
+    PGM_FREE,
+    PGM_OCCUPIED,
+    PGM_UNKNOWN,
+    grey_to_occupancy,
+    occupancy_to_pgm,
+    read_grey_image,
+)
+from map_server.map_yaml import (
+    KNOWN_KEYS,
+    MODES,
+    REQUIRED_KEYS,
+    MapConfig,
+    check_mode,
+    check_thresholds,
+    map_yaml_text,
+    number,
+    parse_map_yaml,
+    read_map_yaml,
+)
 
-MODES = ("trinary", "scale", "raw")
-REQUIRED_KEYS = ("image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh")
-KNOWN_KEYS = frozenset(REQUIRED_KEYS + ("mode",))
-
-# map_saver's pixel values and the thresholds its YAML declares.
-PGM_FREE, PGM_OCCUPIED, PGM_UNKNOWN = 254, 0, 205
-SAVED_OCCUPIED_THRESH, SAVED_FREE_THRESH = 0.65, 0.196
-DEFAULT_SAVE_OCCUPIED, DEFAULT_SAVE_FREE = 65, 0
-
-
-class MapError(Exception):
-    """Base class: every message names the file and the problem."""
-
-
-class MapFileNotFoundError(MapError, FileNotFoundError):
-    pass
-
-
-class MapYamlError(MapError, ValueError):
-    pass
-
-
-class MapImageError(MapError, ValueError):
-    pass
-
-
-@dataclass(frozen=True)
-class MapConfig:
-    image: Path
-    resolution: float
-    origin: tuple
-    negate: bool = False
-    occupied_thresh: float = 0.65
-    free_thresh: float = 0.196
-    mode: str = "trinary"
-    yaml_path: Path = None
-    warnings: tuple = ()
+__all__ = [
+    "DEFAULT_SAVE_FREE",
+    "DEFAULT_SAVE_OCCUPIED",
+    "KNOWN_KEYS",
+    "MODES",
+    "PGM_FREE",
+    "PGM_OCCUPIED",
+    "PGM_UNKNOWN",
+    "REQUIRED_KEYS",
+    "MapConfig",
+    "MapError",
+    "MapFileNotFoundError",
+    "MapImageError",
+    "MapYamlError",
+    "OccupancyMap",
+    "check_mode",
+    "check_save_thresholds",
+    "check_thresholds",
+    "grey_to_occupancy",
+    "load_image_map",
+    "load_map",
+    "load_map_from_config",
+    "map_base_name",
+    "map_yaml_text",
+    "occupancy_to_pgm",
+    "parse_map_yaml",
+    "quaternion_to_yaw",
+    "read_grey_image",
+    "read_map_yaml",
+    "save_map",
+    "yaw_to_quaternion",
+]
 
 
 @dataclass
@@ -100,195 +116,6 @@ class OccupancyMap:
         return cls(data, float(resolution), tuple(float(v) for v in origin))
 
 
-# -- reading -------------------------------------------------------------------------
-
-
-def _number(raw, key, where):
-    if isinstance(raw, bool) or not isinstance(raw, (int, float)):
-        raise MapYamlError(f"{where}: '{key}' must be a number, got {raw!r}")
-    value = float(raw)
-    if not math.isfinite(value):
-        raise MapYamlError(f"{where}: '{key}' must be finite, got {raw!r}")
-    return value
-
-
-def _negate_flag(raw, where):
-    if isinstance(raw, bool):
-        return raw
-    if isinstance(raw, int) and raw in (0, 1):
-        return bool(raw)
-    raise MapYamlError(f"{where}: 'negate' must be 0 or 1, got {raw!r}")
-
-
-def check_thresholds(occupied, free, where):
-    for key, value in (("occupied_thresh", occupied), ("free_thresh", free)):
-        if not 0.0 <= value <= 1.0:
-            raise MapYamlError(f"{where}: '{key}' must be between 0 and 1, got {value}")
-    if free >= occupied:
-        raise MapYamlError(
-            f"{where}: free_thresh ({free}) must be smaller than occupied_thresh ({occupied})"
-        )
-
-
-def check_mode(mode, where):
-    if mode not in MODES:
-        raise MapYamlError(f"{where}: unknown mode {mode!r} (expected trinary, scale or raw)")
-    return mode
-
-
-def parse_map_yaml(text, yaml_path):
-    """Validate a map YAML's text; `yaml_path` locates the image and names errors."""
-    yaml_path = Path(yaml_path)
-    where = str(yaml_path)
-    try:
-        doc = yaml.safe_load(text)
-    except yaml.YAMLError as err:
-        raise MapYamlError(f"{where}: not valid YAML: {err}") from None
-    if not isinstance(doc, dict):
-        raise MapYamlError(f"{where}: expected a mapping of keys (image, resolution, ...)")
-    missing = [key for key in REQUIRED_KEYS if key not in doc]
-    if missing:
-        raise MapYamlError(f"{where}: missing key(s): {', '.join(missing)}")
-    warnings = tuple(
-        f"{where}: unknown key '{key}' ignored" for key in doc if key not in KNOWN_KEYS
-    )
-    image = doc["image"]
-    if not isinstance(image, str) or not image.strip():
-        raise MapYamlError(f"{where}: 'image' must be a file name, got {image!r}")
-    resolution = _number(doc["resolution"], "resolution", where)
-    if resolution <= 0:
-        raise MapYamlError(f"{where}: 'resolution' must be positive, got {resolution}")
-    origin = doc["origin"]
-    if not isinstance(origin, (list, tuple)) or len(origin) != 3:
-        raise MapYamlError(f"{where}: 'origin' must be a list [x, y, yaw], got {origin!r}")
-    origin = tuple(_number(v, "origin", where) for v in origin)
-    occupied = _number(doc["occupied_thresh"], "occupied_thresh", where)
-    free = _number(doc["free_thresh"], "free_thresh", where)
-    check_thresholds(occupied, free, where)
-    mode = check_mode(doc.get("mode", "trinary"), where)
-    image_path = Path(image)
-    if not image_path.is_absolute():
-        image_path = yaml_path.parent / image_path
-    return MapConfig(
-        image=image_path,
-        resolution=resolution,
-        origin=origin,
-        negate=_negate_flag(doc["negate"], where),
-        occupied_thresh=occupied,
-        free_thresh=free,
-        mode=mode,
-        yaml_path=yaml_path,
-        warnings=warnings,
-    )
-
-
-def _cwd_note(path):
-    return "" if Path(path).is_absolute() else f" (looked in {Path.cwd()})"
-
-
-def read_map_yaml(yaml_path):
-    yaml_path = Path(yaml_path)
-    try:
-        text = yaml_path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise MapFileNotFoundError(
-            f"{yaml_path}: map YAML file not found{_cwd_note(yaml_path)}"
-        ) from None
-    except IsADirectoryError:
-        raise MapYamlError(f"{yaml_path}: is a directory, not a map YAML file") from None
-    except UnicodeDecodeError:
-        raise MapYamlError(f"{yaml_path}: not a text file (is it the image?)") from None
-    except OSError as err:
-        raise MapYamlError(f"{yaml_path}: cannot read: {err.strerror or err}") from None
-    return parse_map_yaml(text, yaml_path)
-
-
-def read_grey_image(path):
-    """Load an image as grey values 0..255 (float, row 0 at the top).
-
-    Returns (grey, opaque): opaque is a bool array (False where alpha is 0) or None
-    when the image has no alpha channel. Colour channels are averaged; 16-bit images
-    are scaled to 0..255.
-    """
-    path = Path(path)
-    try:
-        with open(path, "rb") as handle:
-            data = handle.read()
-    except FileNotFoundError:
-        raise MapFileNotFoundError(f"{path}: map image not found{_cwd_note(path)}") from None
-    except OSError as err:
-        raise MapImageError(f"{path}: cannot read image: {err.strerror or err}") from None
-    if pgm.is_pgm(data):
-        try:
-            pixels, maxval = pgm.parse_pgm(data)
-        except pgm.PgmError as err:
-            raise MapImageError(f"{path}: corrupt PGM image: {err}") from None
-        return pixels.astype(np.float64) * (255.0 / maxval), None
-    return _read_with_pil(path, data)
-
-
-def _read_with_pil(path, data):
-    import io
-
-    from PIL import Image, UnidentifiedImageError
-
-    try:
-        image = Image.open(io.BytesIO(data))
-        image.load()
-    except UnidentifiedImageError:
-        raise MapImageError(
-            f"{path}: not an image format this map server reads (PGM, PNG, JPG, ...)"
-        ) from None
-    except (OSError, ValueError, SyntaxError) as err:
-        raise MapImageError(f"{path}: corrupt or truncated image: {err}") from None
-    mode = image.mode
-    if mode in ("I;16", "I;16B", "I;16L", "I"):
-        pixels = np.asarray(image, dtype=np.float64)
-        if pixels.size and (pixels.max() > 65535 or pixels.min() < 0):
-            raise MapImageError(f"{path}: {mode} image values exceed 16 bits; not supported")
-        return pixels * (255.0 / 65535.0), None
-    if mode == "F":
-        raise MapImageError(f"{path}: floating-point images are not supported")
-    if mode == "P":
-        image = image.convert("RGBA" if "transparency" in image.info else "RGB")
-    elif mode in ("1", "L"):
-        image = image.convert("L")
-    elif mode not in ("LA", "RGB", "RGBA"):
-        image = image.convert("RGBA" if "A" in mode else "RGB")
-    pixels = np.asarray(image, dtype=np.float64)
-    if pixels.ndim == 2:
-        return pixels, None
-    has_alpha = image.mode in ("LA", "RGBA")
-    colour = pixels[:, :, :-1] if has_alpha else pixels
-    grey = colour.mean(axis=2)
-    opaque = pixels[:, :, -1] > 0 if has_alpha else None
-    return grey, opaque
-
-
-def grey_to_occupancy(grey, opaque, negate, occupied_thresh, free_thresh, mode):
-    """map_server's rule, cell by cell; returns int8 cells in image order (top row first)."""
-    grey = np.asarray(grey, dtype=np.float64)
-    if negate:
-        grey = 255.0 - grey
-    if mode == "raw":
-        # The original stores the byte as-is in an int8 cell: 255 reads back as -1.
-        return np.trunc(np.clip(grey, 0, 255)).astype(np.uint8).view(np.int8)
-    occ = (255.0 - grey) / 255.0
-    cells = np.full(grey.shape, -1, dtype=np.int8)
-    if mode == "scale":
-        ratio = (occ - free_thresh) / (occupied_thresh - free_thresh)
-        scaled = np.trunc(1.0 + 98.0 * np.clip(ratio, 0.0, 1.0)).astype(np.int8)
-        between = (occ <= occupied_thresh) & (occ >= free_thresh)
-        if opaque is not None:
-            between &= opaque
-        cells[between] = scaled[between]
-    cells[occ > occupied_thresh] = 100
-    cells[occ < free_thresh] = 0
-    if opaque is not None:
-        cells[~opaque] = -1  # a transparent pixel says nothing about the world
-    return cells
-
-
 def load_map_from_config(config):
     grey, opaque = read_grey_image(config.image)
     if grey.size == 0:
@@ -307,26 +134,17 @@ def load_map(yaml_path):
 def load_image_map(image_path, resolution, origin=(0.0, 0.0, 0.0), negate=False):
     """The deprecated `map_server IMAGE RESOLUTION` form: default thresholds, trinary."""
     where = str(image_path)
-    resolution = _number(resolution, "resolution", where)
+    resolution = number(resolution, "resolution", where)
     if resolution <= 0:
         raise MapYamlError(f"{where}: resolution must be positive, got {resolution}")
-    origin = tuple(_number(v, "origin", where) for v in origin)
+    origin = tuple(number(v, "origin", where) for v in origin)
     config = MapConfig(
         image=Path(image_path), resolution=resolution, origin=origin, negate=bool(negate)
     )
     return load_map_from_config(config)
 
 
-# -- saving --------------------------------------------------------------------------
-
-
-def occupancy_to_pgm(data, occupied=DEFAULT_SAVE_OCCUPIED, free=DEFAULT_SAVE_FREE):
-    """map_saver's rule: 0..free -> 254, >= occupied -> 0, else 205; returns top row first."""
-    values = np.asarray(data).astype(np.int16)
-    pixels = np.full(values.shape, PGM_UNKNOWN, dtype=np.uint8)
-    pixels[(values >= 0) & (values <= free)] = PGM_FREE
-    pixels[values >= occupied] = PGM_OCCUPIED
-    return pixels[::-1].copy()
+# -- saving ----------------------------------------------------------------------------
 
 
 def check_save_thresholds(occupied, free):
@@ -336,29 +154,6 @@ def check_save_thresholds(occupied, free):
         raise ValueError(f"free threshold must be between 0 and 100, got {free}")
     if free >= occupied:
         raise ValueError(f"free threshold ({free}) must be smaller than occupied ({occupied})")
-
-
-def _plain(value):
-    return float(value) + 0.0  # no "-0.000000" in the YAML
-
-
-def map_yaml_text(image_name, resolution, origin):
-    """The YAML map_saver writes (the book shows this exact layout)."""
-    name = image_name
-    try:
-        if yaml.safe_load(f"image: {name}") != {"image": name}:
-            name = json.dumps(name)
-    except yaml.YAMLError:
-        name = json.dumps(name)
-    x, y, yaw = (_plain(v) for v in origin)
-    return (
-        f"image: {name}\n"
-        f"resolution: {_plain(resolution):f}\n"
-        f"origin: [{x:f}, {y:f}, {yaw:f}]\n"
-        "negate: 0\n"
-        f"occupied_thresh: {SAVED_OCCUPIED_THRESH}\n"
-        f"free_thresh: {SAVED_FREE_THRESH}\n\n"
-    )
 
 
 def map_base_name(name):
