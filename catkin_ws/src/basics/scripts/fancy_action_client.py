@@ -10,9 +10,9 @@ The book's three runs, without editing the code:
 import argparse
 import sys
 
-import actionlib
 import rospy
 from basics import timer
+from basics.action_client import SimpleActionClient
 from basics.msg import TimerAction, TimerGoal
 
 
@@ -38,7 +38,7 @@ def main():
     args = parser.parse_args(rospy.myargv()[1:])
 
     rospy.init_node("timer_action_client")
-    client = actionlib.SimpleActionClient("timer", TimerAction)
+    client = SimpleActionClient("timer", TimerAction)
     if not client.wait_for_server(rospy.Duration(1.0)):
         rospy.loginfo("waiting for the action server %s", rospy.resolve_name("timer"))
         if not client.wait_for_server():

@@ -30,13 +30,8 @@ def main():
         server.publish_feedback(feedback)
 
     def sleep(seconds):
-        # Wake up early when the client cancels, so preemption is answered promptly.
-        deadline = rospy.get_time() + seconds
-        while not server.is_preempt_requested():
-            left = deadline - rospy.get_time()
-            if left <= 0:
-                return
-            rospy.sleep(min(POLL, left))
+        # Short naps: the timer loop checks for a cancel request between them.
+        rospy.sleep(min(POLL, seconds))
 
     def do_timer(goal):
         start_time = rospy.get_time()

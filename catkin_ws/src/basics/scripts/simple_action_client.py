@@ -8,8 +8,8 @@ rosrun basics simple_action_client.py --duration 2
 import argparse
 import sys
 
-import actionlib
 import rospy
+from basics.action_client import SimpleActionClient
 from basics.msg import TimerAction, TimerGoal
 from basics.timer import seconds_arg
 
@@ -22,7 +22,7 @@ def main():
     args = parser.parse_args(rospy.myargv()[1:])
 
     rospy.init_node("timer_action_client")
-    client = actionlib.SimpleActionClient("timer", TimerAction)
+    client = SimpleActionClient("timer", TimerAction)
     if not client.wait_for_server(rospy.Duration(1.0)):
         rospy.loginfo("waiting for the action server %s", rospy.resolve_name("timer"))
         if not client.wait_for_server():

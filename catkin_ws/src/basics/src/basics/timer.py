@@ -9,6 +9,10 @@ NEGATIVE = "Timer aborted due to negative wait"
 SUCCEEDED = "Timer completed successfully"
 PREEMPTED = "Timer preempted"
 FEEDBACK_PERIOD = 1.0  # seconds between feedback messages
+# Feedback after the first goes out this late, so that a cancel the client sends at exactly
+# k seconds (the book cancels after 3 s) lands before feedback k despite network and
+# scheduling jitter, as in the book's run (3 updates, not 4).
+TICK_LAG = 0.05
 # A ROS duration travels as int32 seconds; larger values cannot be serialised.
 MAX_SENDABLE = 2**31 - 1
 
@@ -24,13 +28,16 @@ def goal_problem(seconds, max_wait=MAX_WAIT):
     return None
 
 
-def run_timer(wait, now, sleep, preempt_requested, publish_feedback, period=FEEDBACK_PERIOD):
+def run_timer(
+    wait, now, sleep, preempt_requested, publish_feedback, period=FEEDBACK_PERIOD, lag=TICK_LAG
+):
     """The fancy server's loop: feedback every `period` until `wait` seconds have passed.
 
-    `now()` gives seconds, `sleep(s)` waits (it may return early once a preemption is
-    requested), `preempt_requested()` polls the client's cancel request, and
-    `publish_feedback(elapsed, remaining)` sends one update. Returns
-    (outcome, elapsed, updates) with outcome "succeeded" or "preempted".
+    `now()` gives seconds, `sleep(s)` waits up to s seconds (short naps keep preemption
+    prompt), `preempt_requested()` polls the client's cancel request, and
+    `publish_feedback(elapsed, remaining)` sends one update. Feedback k goes out at
+    k * period (+ lag for k >= 1). Returns (outcome, elapsed, updates) with outcome
+    "succeeded" or "preempted".
     """
     start = now()
     updates = 0
@@ -40,8 +47,10 @@ def run_timer(wait, now, sleep, preempt_requested, publish_feedback, period=FEED
         elapsed = now() - start
         publish_feedback(elapsed, wait - elapsed)
         updates += 1
-        # Never sleep past the end of the goal (the book's fixed 1 s sleep overshoots).
-        sleep(min(period, max(0.0, wait - (now() - start))))
+        # Sleep to the next tick on a fixed schedule (no drift), never past the goal's end.
+        next_tick = min(updates * period + lag, wait)
+        while not preempt_requested() and now() - start < next_tick:
+            sleep(next_tick - (now() - start))
     return "succeeded", now() - start, updates
 
 
