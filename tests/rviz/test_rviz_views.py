@@ -121,3 +121,24 @@ def test_mapping_view_shows_map_greys_in_proportion(ros):
     assert abs(scan_x - (cx + 60)) < 6 and abs(scan_y - cy) < 6, what
     scan_w, scan_h = rs.extent(masks["scan"])
     assert scan_h > 5 * scan_w, "scan line should be vertical: " + what
+
+
+def test_view_robot_launch_shows_the_model_and_its_frames(ros):
+    launch = ["roslaunch", "bullet_turtlebot", "view_robot.launch"]
+    with rs.RvizSession(env=ros.env, workdir=ros.workdir / "rviz", command=launch) as rviz:
+
+        def ready(img):
+            counts = rc.measure(rviz, img)[2]
+            labels = rs.count_rgb(rviz.view(img), (255, 255, 255), 10)
+            return counts["robot"] > 8000 and labels > 300
+
+        path, img = rviz.settle(ready, timeout=SETTLE)
+        view, masks, counts = rc.measure(rviz, img)
+        nodes = ros.run(["rosnode", "list"]).stdout.split()
+    what = describe(path, counts)
+    assert "/robot_state_publisher" in nodes and "/rviz" in nodes, nodes
+    # A close-up: the plates fill a good part of the view, frame names drawn in white.
+    assert counts["robot"] > 8000, "robot model missing: " + what
+    assert rs.count_rgb(view, (255, 255, 255), 10) > 300, "TF frame names missing: " + what
+    robot_x, robot_y = rs.centroid(masks["robot"])
+    assert abs(robot_x - view.shape[1] / 2) < 0.1 * view.shape[1], what

@@ -40,15 +40,18 @@ class RvizError(RuntimeError):
 class RvizSession:
     """One rviz inside its own Xvfb; screenshots on demand; everything killed on close."""
 
-    def __init__(self, config, env=None, workdir=None, screen=SCREEN, extra_args=()):
-        self.config = Path(config).resolve()
-        if not self.config.is_file():
-            raise FileNotFoundError(f"rviz config not found: {self.config}")
+    def __init__(self, config=None, env=None, workdir=None, screen=SCREEN, command=None):
+        """rviz -d `config`, or any `command` that opens rviz (e.g. a roslaunch)."""
+        if command is None:
+            config = Path(config).resolve()
+            if not config.is_file():
+                raise FileNotFoundError(f"rviz config not found: {config}")
+            command = ["rviz", "-d", str(config)]
+        self.command = [str(part) for part in command]
         self.env = dict(env or os.environ)
         self.workdir = Path(workdir or tempfile.mkdtemp(prefix="rviz-"))
         self.workdir.mkdir(parents=True, exist_ok=True)
         self.screen = screen
-        self.extra_args = list(extra_args)
         self.proc = None
         self.display = None
         self.xauthority = None
@@ -81,7 +84,7 @@ class RvizSession:
         info = self.workdir / f"xvfb-{attempt}.info"
         self.log_path = self.workdir / f"rviz-{attempt}.log"
         # The inner shell reports the display and cookie file xvfb-run chose and its own
-        # pid, then becomes rviz (so that pid is rviz's).
+        # pid, then becomes the command (so that pid is rviz's, or roslaunch's).
         inner = 'echo "$DISPLAY $XAUTHORITY $$" > "$0.tmp" && mv "$0.tmp" "$0" && exec "$@"'
         width, height = self.screen
         cmd = [
@@ -93,10 +96,7 @@ class RvizSession:
             "-c",
             inner,
             str(info),
-            "rviz",
-            "-d",
-            str(self.config),
-            *self.extra_args,
+            *self.command,
         ]
         env = dict(self.env)
         env.pop("DISPLAY", None)
