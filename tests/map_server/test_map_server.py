@@ -85,13 +85,15 @@ def test_books_command_from_maps_folder(ros):
     assert ros.topics() >= {"/map", "/map_metadata", "/rosout"}
 
 
-def test_frame_id_parameter_and_rotated_origin(ros, tmp_path):
+def test_frame_id_parameter_rotated_origin_unknown_key(ros, tmp_path):
     _, yaml_path = sample_map(tmp_path)
     rotated = tmp_path / "rotated.yaml"
-    rotated.write_text(yaml_path.read_text().replace("0.000000]", "0.500000]"))
-    ros.start(["rosrun", "map_server", "map_server", str(rotated), "_frame_id:=world"])
+    text = yaml_path.read_text().replace("0.000000]", "0.500000]") + "colour: blue\n"
+    rotated.write_text(text)
+    server = ros.start(["rosrun", "map_server", "map_server", str(rotated), "_frame_id:=world"])
     ros.wait_for_topic("/map")
     (record,) = ros.echo("/map")
+    assert "rotated.yaml: unknown key 'colour' ignored" in ros.output(server)
     assert record["msg"]["header"]["frame_id"] == "world"
     q = record["msg"]["info"]["origin"]["orientation"]
     assert (q["z"], q["w"]) == pytest.approx((np.sin(0.25), np.cos(0.25)))
