@@ -16,6 +16,7 @@ struct Solid {
   enum Kind { kBox, kCylinder } kind = kBox;
   Eigen::Vector3d center = Eigen::Vector3d::Zero();
   double yaw = 0.0;                                       // boxes
+  double cos_yaw = 1.0, sin_yaw = 0.0;                    // cached for ray tests
   Eigen::Vector3d half = Eigen::Vector3d::Constant(0.5);  // box half extents; cylinder: (r, r, h/2)
   Color color;
 };
@@ -32,6 +33,36 @@ struct SweepResult {
   double fraction = 1.0;                                  // of the requested motion that is free
   Eigen::Vector2d normal = Eigen::Vector2d::Zero();       // from the obstacle towards the robot
   Eigen::Vector2d contact = Eigen::Vector2d::Zero();      // contact point, world frame
+};
+
+class World;
+
+// Many rays from one origin (a scan, a camera frame): Bullet's broadphase gathers the solids
+// within reach once, then each ray tests only the solids whose horizontal angular sector
+// (seen from the origin) contains its azimuth, nearest first, stopping early. Exact results,
+// identical to World::raycast.
+class RayFan {
+ public:
+  // Rays with azimuth within [yaw - half_fov, yaw + half_fov] reaching at most max_distance
+  // (horizontally); other rays still work but may miss solids outside the sector.
+  RayFan(const World& world, const Eigen::Vector3d& origin, double max_distance, double yaw, double half_fov);
+  bool cast(const Eigen::Vector3d& dir, double max_distance, RayHit* hit, bool include_floor = true) const;
+  // The same with the ray's azimuth bin known (bin_of(atan2(dir.y, dir.x))), e.g. per column.
+  int bin_of(double azimuth) const;
+  bool cast_in_bin(int bin, const Eigen::Vector3d& dir, double max_distance, RayHit* hit,
+                   bool include_floor = true) const;
+  size_t candidates() const { return candidates_; }
+
+ private:
+  struct Entry {
+    int solid;
+    double min_distance;  // horizontal distance from the origin to the solid's footprint
+  };
+  const World& world_;
+  Eigen::Vector3d origin_;
+  double yaw_, half_fov_, bin_width_;
+  std::vector<std::vector<Entry>> bins_;  // per azimuth bin, nearest first
+  size_t candidates_ = 0;
 };
 
 class World {
@@ -55,6 +86,8 @@ class World {
   bool cylinder_collides(const Eigen::Vector2d& at, double radius, double height, double clearance) const;
 
   const std::vector<Solid>& solids() const { return solids_; }
+  // Indices of solids whose bounding boxes overlap the given box (Bullet broadphase).
+  std::vector<int> solids_in_box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) const;
   // Axis-aligned bounds of all solids (x/y); zero when the world is empty.
   Eigen::Vector2d min_corner() const { return min_; }
   Eigen::Vector2d max_corner() const { return max_; }
@@ -66,6 +99,9 @@ class World {
   Eigen::Vector2d min_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d max_ = Eigen::Vector2d::Zero();
 };
+
+// Floor hit at z = 0 (a tiled floor), when the ray goes down and reaches it before `best`.
+bool intersect_floor(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, double best, RayHit* hit);
 
 // Exact ray/solid intersection (no Bullet); exposed for tests. Returns false on a miss or
 // when the origin lies inside the solid.

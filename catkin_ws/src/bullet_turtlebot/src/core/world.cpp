@@ -2,6 +2,7 @@
 
 #include <btBulletCollisionCommon.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -14,7 +15,7 @@ btVector3 bt(const Eigen::Vector3d& v) { return btVector3(btScalar(v.x()), btSca
 
 bool intersect_box(const Solid& s, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
                    double max_distance, double* distance, Eigen::Vector3d* normal) {
-  const double c = std::cos(s.yaw), sn = std::sin(s.yaw);
+  const double c = s.cos_yaw, sn = s.sin_yaw;
   const Eigen::Vector3d rel = origin - s.center;
   // World to box frame: rotate by -yaw.
   const double o[3] = {c * rel.x() + sn * rel.y(), -sn * rel.x() + c * rel.y(), rel.z()};
@@ -122,6 +123,14 @@ struct SweepCallback : public btCollisionWorld::ClosestConvexResultCallback {
   }
 };
 
+struct BoxCollector : public btBroadphaseAabbCallback {
+  std::vector<int>* out;
+  bool process(const btBroadphaseProxy* proxy) override {
+    out->push_back(static_cast<const btCollisionObject*>(proxy->m_clientObject)->getUserIndex());
+    return true;
+  }
+};
+
 struct PenetrationCallback : public btCollisionWorld::ContactResultCallback {
   bool penetrating = false;
   btScalar addSingleResult(btManifoldPoint& cp, const btCollisionObjectWrapper*, int, int,
@@ -132,6 +141,19 @@ struct PenetrationCallback : public btCollisionWorld::ContactResultCallback {
 };
 
 }  // namespace
+
+bool intersect_floor(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, double best, RayHit* hit) {
+  if (dir.z() >= -1e-12 || origin.z() <= 0) return false;
+  const double t = -origin.z() / dir.z();
+  if (t > best) return false;
+  hit->distance = t;
+  hit->normal = Eigen::Vector3d::UnitZ();
+  hit->solid = -1;
+  const Eigen::Vector3d p = origin + t * dir;
+  const bool dark = (static_cast<long>(std::floor(p.x())) + static_cast<long>(std::floor(p.y()))) & 1;
+  hit->color = dark ? Color{0.55f, 0.55f, 0.5f} : Color{0.68f, 0.68f, 0.62f};
+  return true;
+}
 
 bool intersect_solid(const Solid& solid, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
                      double max_distance, double* distance, Eigen::Vector3d* normal) {
@@ -175,6 +197,10 @@ std::vector<Solid> build_solids(const WorldSpec& spec) {
     solid.half = Eigen::Vector3d(cyl.radius, cyl.radius, cyl.height / 2);
     solid.color = cyl.color;
     solids.push_back(solid);
+  }
+  for (Solid& s : solids) {
+    s.cos_yaw = std::cos(s.yaw);
+    s.sin_yaw = std::sin(s.yaw);
   }
   return solids;
 }
@@ -251,18 +277,7 @@ bool World::raycast(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, d
     hit->solid = walker.best_index;
     hit->color = solids_[walker.best_index].color;
   }
-  if (include_floor && dir.z() < -1e-12 && origin.z() > 0) {
-    const double t = -origin.z() / dir.z();
-    if (t <= walker.best) {
-      found = true;
-      hit->distance = t;
-      hit->normal = Eigen::Vector3d::UnitZ();
-      hit->solid = -1;
-      const Eigen::Vector3d p = origin + t * dir;
-      const bool dark = (static_cast<long>(std::floor(p.x())) + static_cast<long>(std::floor(p.y()))) & 1;
-      hit->color = dark ? Color{0.55f, 0.55f, 0.5f} : Color{0.68f, 0.68f, 0.62f};
-    }
-  }
+  if (include_floor && intersect_floor(origin, dir, walker.best, hit)) found = true;
   return found;
 }
 
@@ -301,6 +316,154 @@ bool World::cylinder_collides(const Eigen::Vector2d& at, double radius, double h
   PenetrationCallback callback;
   bullet_->world.contactTest(&probe, callback);
   return callback.penetrating;
+}
+
+}  // namespace bullet_turtlebot
+
+namespace bullet_turtlebot {
+
+std::vector<int> World::solids_in_box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) const {
+  std::vector<int> out;
+  BoxCollector collector;
+  collector.out = &out;
+  bullet_->broadphase.aabbTest(bt(lo), bt(hi), collector);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+namespace {
+
+// Angular sector [lo, hi] (radians, relative to `centre`) a solid covers seen from `o`, and
+// its horizontal distance; full circle when o is inside its footprint.
+void solid_sector(const Solid& s, const Eigen::Vector2d& o, double* centre, double* lo, double* hi,
+                  double* distance) {
+  const Eigen::Vector2d c(s.center.x(), s.center.y());
+  const Eigen::Vector2d rel = c - o;
+  *centre = std::atan2(rel.y(), rel.x());
+  if (s.kind == Solid::kCylinder) {
+    const double d = rel.norm(), r = s.half.x();
+    if (d <= r) {
+      *lo = -M_PI;
+      *hi = M_PI;
+      *distance = 0.0;
+      return;
+    }
+    *lo = -std::asin(r / d);
+    *hi = -*lo;
+    *distance = d - r;
+    return;
+  }
+  // Box: corners, and the distance from o to the rectangle.
+  const Eigen::Vector2d ax(s.cos_yaw, s.sin_yaw), ay(-s.sin_yaw, s.cos_yaw);
+  const double lx = -rel.dot(ax), ly = -rel.dot(ay);  // o in the box frame
+  const double ex = std::max(0.0, std::abs(lx) - s.half.x()), ey = std::max(0.0, std::abs(ly) - s.half.y());
+  *distance = std::hypot(ex, ey);
+  if (ex == 0.0 && ey == 0.0) {
+    *lo = -M_PI;
+    *hi = M_PI;
+    return;
+  }
+  *lo = M_PI;
+  *hi = -M_PI;
+  for (const double sx : {-1.0, 1.0}) {
+    for (const double sy : {-1.0, 1.0}) {
+      const Eigen::Vector2d corner = rel + sx * s.half.x() * ax + sy * s.half.y() * ay;
+      const double a = normalize_angle(std::atan2(corner.y(), corner.x()) - *centre);
+      *lo = std::min(*lo, a);
+      *hi = std::max(*hi, a);
+    }
+  }
+}
+
+constexpr double kBinWidth = 0.5 * M_PI / 180.0;
+constexpr double kAngleSlack = 1e-6;
+
+}  // namespace
+
+RayFan::RayFan(const World& world, const Eigen::Vector3d& origin, double max_distance, double yaw, double half_fov)
+    : world_(world), origin_(origin), yaw_(yaw), half_fov_(std::min(half_fov, M_PI)), bin_width_(kBinWidth) {
+  const int bins = std::max(1, static_cast<int>(std::ceil(2 * half_fov_ / bin_width_)) + 1);
+  bins_.resize(static_cast<size_t>(bins));
+  const Eigen::Vector3d lo(origin.x() - max_distance, origin.y() - max_distance, -1e3);
+  const Eigen::Vector3d hi(origin.x() + max_distance, origin.y() + max_distance, 1e3);
+  std::vector<int> found = world.solids_in_box(lo, hi);
+  struct Candidate {
+    Entry entry;
+    double centre, lo, hi;
+  };
+  std::vector<Candidate> list;
+  const Eigen::Vector2d o(origin.x(), origin.y());
+  for (int index : found) {
+    Candidate c;
+    c.entry.solid = index;
+    solid_sector(world.solids()[index], o, &c.centre, &c.lo, &c.hi, &c.entry.min_distance);
+    if (c.entry.min_distance > max_distance) continue;
+    list.push_back(c);
+  }
+  std::sort(list.begin(), list.end(),
+            [](const Candidate& a, const Candidate& b) { return a.entry.min_distance < b.entry.min_distance; });
+  const double start = yaw_ - half_fov_;
+  for (const Candidate& c : list) {
+    if (c.hi - c.lo >= 2 * M_PI - 1e-9) {
+      for (auto& bin : bins_) bin.push_back(c.entry);
+      ++candidates_;
+      continue;
+    }
+    // Sector in fan coordinates [0, 2 half_fov], clipped; it may wrap around once.
+    const double a0 = normalize_angle(c.centre + c.lo - start - M_PI) + M_PI - kAngleSlack;
+    const double span = c.hi - c.lo + 2 * kAngleSlack;
+    bool used = false;
+    for (const double offset : {0.0, -2 * M_PI}) {
+      const double s0 = a0 + offset, s1 = s0 + span;
+      const int b0 = std::max(0, static_cast<int>(std::floor(s0 / bin_width_)));
+      const int b1 = std::min(bins - 1, static_cast<int>(std::floor(s1 / bin_width_)));
+      for (int b = b0; b <= b1; ++b) {
+        bins_[static_cast<size_t>(b)].push_back(c.entry);
+        used = true;
+      }
+    }
+    candidates_ += used;
+  }
+}
+
+int RayFan::bin_of(double azimuth) const {
+  const double a = normalize_angle(azimuth - (yaw_ - half_fov_) - M_PI) + M_PI;
+  return static_cast<int>(std::floor(a / bin_width_));
+}
+
+bool RayFan::cast(const Eigen::Vector3d& dir, double max_distance, RayHit* hit, bool include_floor) const {
+  return cast_in_bin(bin_of(std::atan2(dir.y(), dir.x())), dir, max_distance, hit, include_floor);
+}
+
+bool RayFan::cast_in_bin(int bin, const Eigen::Vector3d& dir, double max_distance, RayHit* hit,
+                         bool include_floor) const {
+  if (bin < 0 || bin >= static_cast<int>(bins_.size())) {
+    return world_.raycast(origin_, dir, max_distance, hit, include_floor);  // outside the fan
+  }
+  double best = max_distance;
+  int best_index = -1;
+  Eigen::Vector3d best_normal;
+  const auto& solids = world_.solids();
+  for (const Entry& e : bins_[static_cast<size_t>(bin)]) {
+    if (e.min_distance > best) break;
+    double t;
+    Eigen::Vector3d n;
+    if (intersect_solid(solids[static_cast<size_t>(e.solid)], origin_, dir, best, &t, &n) && t < best) {
+      best = t;
+      best_index = e.solid;
+      best_normal = n;
+    }
+  }
+  bool found = best_index >= 0;
+  if (found) {
+    hit->distance = best;
+    hit->normal = best_normal;
+    hit->solid = best_index;
+    hit->color = solids[static_cast<size_t>(best_index)].color;
+  }
+  if (include_floor && intersect_floor(origin_, dir, best, hit)) found = true;
+  return found;
 }
 
 }  // namespace bullet_turtlebot
