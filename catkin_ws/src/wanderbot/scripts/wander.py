@@ -2,7 +2,7 @@
 """Wander: drive until an obstacle is within 0.8 m (or 30 s pass), then spin for 5 s.
 
 Subscribes `scan` (sensor_msgs/LaserScan), publishes `cmd_vel` (geometry_msgs/Twist) at 10 Hz.
-Private parameters: ~forward_speed (0.3 m/s), ~turn_speed (1.0 rad/s), ~min_range (0.8 m),
+Private parameters: ~forward_speed (0.4 m/s), ~turn_speed (1.0 rad/s), ~min_range (0.8 m),
 ~drive_time (30 s), ~spin_time (5 s).
 """
 
@@ -19,7 +19,7 @@ from wanderbot.ranges import min_range
 
 class WanderNode:
     def __init__(self):
-        self.forward_speed = finite_number("~forward_speed", rospy.get_param("~forward_speed", 0.3))
+        self.forward_speed = finite_number("~forward_speed", rospy.get_param("~forward_speed", 0.4))
         self.turn_speed = finite_number("~turn_speed", rospy.get_param("~turn_speed", 1.0))
         self.min_range = positive_number("~min_range", rospy.get_param("~min_range", 0.8))
         self.drive_time = positive_number("~drive_time", rospy.get_param("~drive_time", 30.0))
