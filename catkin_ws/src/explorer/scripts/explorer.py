@@ -1,0 +1,277 @@
+#!/usr/bin/python3
+"""explorer: frontier exploration on a SLAM map.
+
+Subscribes `map` (nav_msgs/OccupancyGrid) and `scan` (sensor_msgs/LaserScan); reads the
+robot pose from tf `~map_frame` -> `~base_frame`; publishes `cmd_vel` (geometry_msgs/Twist),
+`~path` (nav_msgs/Path), `~goal` (geometry_msgs/PoseStamped) and `~done` (std_msgs/Bool,
+latched). See the package README for the parameters.
+"""
+
+import math
+import sys
+import threading
+import time
+
+import rospy
+import tf2_ros
+from explorer.exploration import Explorer, ExplorerParams
+from explorer.follower import FollowerParams
+from explorer.map_message import MapFormatError, decode_occupancy_grid
+from explorer.map_planner import MapPlanner, PlannerParams
+from explorer.params import ParamError, non_negative, positive
+from explorer.recovery import RecoveryParams
+from explorer.scan_safety import clearance_ahead
+from geometry_msgs.msg import PoseStamped, Twist
+from nav_msgs.msg import Path
+from sensor_msgs.msg import LaserScan
+from std_msgs.msg import Bool
+
+
+def param(name, default, check=positive):
+    return check("~" + name, rospy.get_param("~" + name, default))
+
+
+def read_params():
+    planner = PlannerParams(
+        plan_resolution=param("plan_resolution", 0.10),
+        robot_radius=param("robot_radius", 0.18),
+        inflation_radius=param("inflation_radius", 0.30),
+        cost_scale=param("cost_scale", 3.0, non_negative),
+        min_frontier_size=param("min_frontier_size", 0.3, non_negative),
+        reach_min=param("reach_min", 0.4, non_negative),
+        reach_max=param("reach_max", 1.2),
+        info_weight=param("info_weight", 0.3, non_negative),
+        switch_margin=param("switch_margin", 1.0, non_negative),
+        blacklist_radius=param("blacklist_radius", 0.5),
+    )
+    if planner.inflation_radius < planner.robot_radius:
+        raise ParamError("~inflation_radius must be >= ~robot_radius")
+    follower = FollowerParams(
+        max_linear=param("max_linear", 0.35),
+        max_angular=param("max_angular", 1.0),
+        lookahead=param("lookahead", 0.5),
+        goal_tolerance=param("goal_tolerance", 0.25),
+    )
+    explorer = ExplorerParams(
+        replan_period=param("replan_period", 3.0),
+        stop_distance=param("stop_distance", 0.40),
+        blacklist_timeout=param("blacklist_timeout", 60.0),
+        spin_speed=min(param("spin_speed", 0.8), follower.max_angular),
+    )
+    recovery = RecoveryParams(turn_speed=min(0.8, follower.max_angular))
+    return planner, follower, explorer, recovery
+
+
+class ExplorerNode:
+    def __init__(self):
+        planner_params, follower_params, explorer_params, recovery_params = read_params()
+        self.map_frame = rospy.get_param("~map_frame", "map")
+        self.base_frame = rospy.get_param("~base_frame", "base_footprint")
+        self.control_rate = param("control_rate", 10.0)
+        self.log_period = param("log_period", 30.0)
+        self.scan_half_width = planner_params.robot_radius + 0.04
+        self.planner = MapPlanner(planner_params)
+        self.explorer = Explorer(
+            explorer_params, follower_params, recovery_params, planner_params.blacklist_radius
+        )
+        self.lock = threading.Lock()
+        self.wake = threading.Event()
+        self.raw_map = None
+        self.map_is_new = False
+        self.clearance = None  # (ros time, metres ahead)
+        self.sensor_offsets = {}
+        self.pose = None
+        self.travelled = 0.0
+        self.last_log = None
+        self.done_published = None
+        self.idle_cycles = 0
+
+        self.tf_buffer = tf2_ros.Buffer(rospy.Duration(10.0))
+        self.tf_listener = tf2_ros.TransformListener(self.tf_buffer)
+        self.cmd_pub = rospy.Publisher("cmd_vel", Twist, queue_size=1)
+        self.path_pub = rospy.Publisher("~path", Path, queue_size=1, latch=True)
+        self.goal_pub = rospy.Publisher("~goal", PoseStamped, queue_size=1, latch=True)
+        self.done_pub = rospy.Publisher("~done", Bool, queue_size=1, latch=True)
+        self.publish_done(False)
+        # The map arrives raw and is decoded with numpy: rospy's int8[] tuples are slow.
+        rospy.Subscriber("map", rospy.AnyMsg, self.map_callback, queue_size=1, buff_size=2**24)
+        rospy.Subscriber("scan", LaserScan, self.scan_callback, queue_size=1, buff_size=2**20)
+
+    # -- inputs ------------------------------------------------------------------
+    def map_callback(self, msg):
+        try:
+            raw = decode_occupancy_grid(msg._buff)
+        except MapFormatError as e:
+            rospy.logerr_throttle(10, f"explorer: ignoring map: {e}")
+            return
+        if abs(raw.origin[2]) > 1e-6:
+            rospy.logerr_throttle(10, "explorer: ignoring map: rotated origins are not supported")
+            return
+        if raw.frame_id.lstrip("/") != self.map_frame:
+            rospy.logwarn_throttle(
+                30, f"explorer: map frame '{raw.frame_id}' is not ~map_frame '{self.map_frame}'"
+            )
+        with self.lock:
+            self.raw_map = raw
+            self.map_is_new = True
+        self.wake.set()
+
+    def scan_callback(self, msg):
+        offset = self.sensor_offset(msg.header.frame_id)
+        if offset is None:
+            return
+        clear = clearance_ahead(
+            msg.ranges,
+            msg.angle_min,
+            msg.angle_increment,
+            msg.range_min,
+            msg.range_max,
+            self.scan_half_width,
+            offset,
+        )
+        with self.lock:
+            self.clearance = (msg.header.stamp.to_sec(), clear)
+
+    def sensor_offset(self, frame):
+        if frame not in self.sensor_offsets:
+            try:
+                t = self.tf_buffer.lookup_transform(
+                    self.base_frame, frame.lstrip("/"), rospy.Time(0), rospy.Duration(0.1)
+                )
+            except tf2_ros.TransformException as e:
+                rospy.logwarn_throttle(10, f"explorer: no tf {self.base_frame} -> {frame}: {e}")
+                return None
+            self.sensor_offsets[frame] = t.transform.translation.x
+        return self.sensor_offsets[frame]
+
+    def robot_pose(self):
+        try:
+            t = self.tf_buffer.lookup_transform(self.map_frame, self.base_frame, rospy.Time(0))
+        except tf2_ros.TransformException as e:
+            rospy.logwarn_throttle(
+                10, f"explorer: waiting for tf {self.map_frame} -> {self.base_frame}: {e}"
+            )
+            return None
+        q = t.transform.rotation
+        yaw = math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
+        return t.transform.translation.x, t.transform.translation.y, yaw
+
+    # -- control loop (sim time) --------------------------------------------------
+    def control(self, _event):
+        now = rospy.get_time()
+        pose = self.robot_pose()
+        twist = Twist()
+        if pose is not None:
+            with self.lock:
+                clearance = self.clearance
+            if clearance is None or now - clearance[0] > 1.0:
+                rospy.logwarn_throttle(10, "explorer: no recent scan: not driving forward")
+                ahead = 0.0
+            else:
+                ahead = clearance[1]
+            if self.pose is not None:
+                step = math.hypot(pose[0] - self.pose[0], pose[1] - self.pose[1])
+                if step < 1.0:  # ignore SLAM corrections
+                    self.travelled += step
+            self.pose = pose
+            with self.lock:
+                twist.linear.x, twist.angular.z = self.explorer.control(now, *pose, ahead)
+                events = self.explorer.events
+                self.explorer.events = []
+                wants = self.explorer.wants_plan(now, self.map_is_new)
+            self.report(events, now)
+            if wants:
+                self.wake.set()
+        if self.explorer.done and twist.linear.x == 0 and twist.angular.z == 0:
+            self.idle_cycles += 1
+        else:
+            self.idle_cycles = 0
+        if self.idle_cycles < self.control_rate:  # then fall silent: leave the base to others
+            self.cmd_pub.publish(twist)
+        self.publish_done(self.explorer.done)
+
+    def report(self, events, now):
+        for event in events:
+            rospy.loginfo(f"explorer: {event} (travelled {self.travelled:.1f} m)")
+        if self.last_log is None:
+            self.last_log = now
+        if now - self.last_log >= self.log_period:
+            self.last_log = now
+            rospy.loginfo(
+                f"explorer: {self.explorer.state}, {self.planner.frontier_count} frontiers, "
+                f"{self.planner.known_free_area():.1f} m^2 known free, "
+                f"travelled {self.travelled:.1f} m, {self.explorer.goals_reached} goals reached"
+            )
+
+    def publish_done(self, done):
+        if done != self.done_published:
+            self.done_published = done
+            self.done_pub.publish(Bool(data=done))
+
+    # -- planning thread ------------------------------------------------------------
+    def planning_loop(self):
+        while not rospy.is_shutdown():
+            self.wake.wait(0.1)
+            self.wake.clear()
+            now = rospy.get_time()
+            with self.lock:
+                if not self.explorer.wants_plan(now, self.map_is_new) or self.pose is None:
+                    continue
+                raw, fresh = self.raw_map, self.map_is_new
+                self.map_is_new = False
+                excluded = self.explorer.excluded_points(now)
+                goal = self.explorer.current_goal
+            if raw is None:
+                continue
+            started = time.monotonic()
+            if fresh:
+                self.planner.set_map(raw.data, raw.resolution, raw.origin[0], raw.origin[1])
+            x, y, _ = self.pose
+            plan = self.planner.plan(x, y, excluded, current_goal=goal)
+            rospy.logdebug(f"explorer: planned in {time.monotonic() - started:.3f} s wall")
+            with self.lock:
+                self.explorer.accept_plan(plan, rospy.get_time())
+            if plan is not None:
+                self.publish_plan(plan)
+
+    def publish_plan(self, plan):
+        stamp = rospy.Time.now()
+        path = Path()
+        path.header.frame_id = self.map_frame
+        path.header.stamp = stamp
+        for x, y in plan.path:
+            pose = PoseStamped()
+            pose.header = path.header
+            pose.pose.position.x, pose.pose.position.y = float(x), float(y)
+            pose.pose.orientation.w = 1.0
+            path.poses.append(pose)
+        self.path_pub.publish(path)
+        goal = PoseStamped()
+        goal.header = path.header
+        goal.pose.position.x, goal.pose.position.y = plan.goal
+        goal.pose.orientation.z = math.sin(plan.look_yaw / 2)
+        goal.pose.orientation.w = math.cos(plan.look_yaw / 2)
+        self.goal_pub.publish(goal)
+
+    def run(self):
+        while not rospy.is_shutdown() and rospy.get_rostime().is_zero():
+            time.sleep(0.01)  # sim time: wait for /clock
+        rospy.on_shutdown(lambda: self.cmd_pub.publish(Twist()))
+        rospy.Timer(rospy.Duration(1.0 / self.control_rate), self.control)
+        rospy.loginfo(f"explorer: exploring ({self.map_frame} -> {self.base_frame})")
+        self.planning_loop()
+
+
+def main():
+    rospy.init_node("explorer")
+    try:
+        node = ExplorerNode()
+    except ParamError as e:
+        rospy.logfatal(f"explorer: {e}")
+        return 2
+    node.run()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,212 @@
+"""A ROS-free stand-in for the simulator and SLAM, for testing the exploring behaviour on
+a world map: a grid world from a PGM, a Kinect-like ray fan, a perfect-pose mapper and a
+differential-drive robot moved by the explorer's own commands."""
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+from scipy import ndimage
+
+REPO = Path(__file__).resolve().parents[2]
+WORLDS = REPO / "catkin_ws" / "src" / "bullet_turtlebot" / "worlds"
+CAMERA_X = -0.087  # camera_depth_frame behind base_footprint (URDF)
+
+
+def read_pgm(path):
+    """A binary PGM (P5) as a uint8 array, row 0 = top of the image."""
+    data = Path(path).read_bytes()
+    fields, pos = [], 0
+    while len(fields) < 4:
+        while data[pos : pos + 1].isspace():
+            pos += 1
+        if data[pos : pos + 1] == b"#":
+            pos = data.index(b"\n", pos) + 1
+            continue
+        end = pos
+        while not data[end : end + 1].isspace():
+            end += 1
+        fields.append(data[pos:end])
+        pos = end
+    assert fields[0] == b"P5", f"{path}: not a binary PGM"
+    width, height = int(fields[1]), int(fields[2])
+    pixels = np.frombuffer(data, dtype=np.uint8, count=width * height, offset=pos + 1)
+    return pixels.reshape(height, width)
+
+
+def read_map_yaml(path):
+    """(resolution, origin x, origin y, image path) of a map_server YAML (flat keys)."""
+    values = {}
+    for line in Path(path).read_text().splitlines():
+        line = line.split("#", 1)[0]
+        if ":" in line and not line.startswith(" "):
+            key, value = line.split(":", 1)
+            values[key.strip()] = value.strip()
+    origin = [float(v) for v in values["origin"].strip("[]").split(",")]
+    return float(values["resolution"]), origin[0], origin[1], Path(path).parent / values["image"]
+
+
+@dataclass
+class GridWorld:
+    """Occupied cells (row 0 at origin_y, as OccupancyGrid) in the world frame."""
+
+    occupied: np.ndarray
+    resolution: float
+    origin_x: float
+    origin_y: float
+
+    @classmethod
+    def from_yaml(cls, path):
+        resolution, ox, oy, image = read_map_yaml(path)
+        pixels = np.flipud(read_pgm(image))
+        return cls(pixels < 128, resolution, ox, oy)
+
+    def cell(self, x, y):
+        col = np.floor((np.asarray(x) - self.origin_x) / self.resolution).astype(int)
+        row = np.floor((np.asarray(y) - self.origin_y) / self.resolution).astype(int)
+        return row, col
+
+    def blocked(self, x, y):
+        row, col = self.cell(x, y)
+        h, w = self.occupied.shape
+        outside = (row < 0) | (row >= h) | (col < 0) | (col >= w)
+        return outside | self.occupied[np.clip(row, 0, h - 1), np.clip(col, 0, w - 1)]
+
+    def clearance(self):
+        """Metres from each cell centre to the nearest occupied cell's edge."""
+        return (
+            ndimage.distance_transform_edt(~self.occupied) * self.resolution - self.resolution / 2
+        )
+
+    def free_region(self, x, y):
+        """Free cells connected to (x, y): the space a mapper can discover from there."""
+        labels, _ = ndimage.label(~self.occupied)
+        row, col = self.cell(x, y)
+        return labels == labels[row, col]
+
+
+def cast_fan(world, x, y, yaw, fov=math.radians(58), beams=80, range_min=0.45, range_max=8.0):
+    """(angles, ranges) of a scan from a sensor at (x, y, yaw); REP 117 special values:
+    +inf for nothing within range_max, -inf for a hit closer than range_min."""
+    angles = np.linspace(-fov / 2, fov / 2, beams)
+    step = world.resolution / 2
+    t = np.arange(step, range_max + step, step)
+    xs = x + np.cos(yaw + angles)[:, None] * t[None, :]
+    ys = y + np.sin(yaw + angles)[:, None] * t[None, :]
+    hit = world.blocked(xs, ys)
+    first = np.where(hit.any(axis=1), hit.argmax(axis=1), -1)
+    ranges = np.where(first >= 0, t[np.maximum(first, 0)], np.inf)
+    ranges[(first >= 0) & (ranges < range_min)] = -np.inf
+    return angles, ranges
+
+
+class Mapper:
+    """Perfect-pose occupancy mapping on the world's grid: cells along each beam become
+    free, the beam's end becomes occupied. Publishes -1/0/100 like gmapping."""
+
+    def __init__(self, world):
+        self.world = world
+        self.free = np.zeros(world.occupied.shape, dtype=bool)
+        self.hit = np.zeros(world.occupied.shape, dtype=bool)
+
+    def integrate(self, x, y, yaw, angles, ranges, range_max=8.0):
+        step = self.world.resolution / 2
+        for a, r in zip(angles, ranges, strict=True):
+            if np.isneginf(r) or np.isnan(r):
+                continue
+            reach = min(r, range_max) if np.isfinite(r) else range_max
+            t = np.arange(0.0, reach - step, step)
+            rows, cols = self.world.cell(x + np.cos(yaw + a) * t, y + np.sin(yaw + a) * t)
+            self._mark(self.free, rows, cols)
+            if np.isfinite(r):
+                row, col = self.world.cell(x + np.cos(yaw + a) * r, y + np.sin(yaw + a) * r)
+                self._mark(self.hit, np.atleast_1d(row), np.atleast_1d(col))
+
+    @staticmethod
+    def _mark(grid, rows, cols):
+        h, w = grid.shape
+        ok = (rows >= 0) & (rows < h) & (cols >= 0) & (cols < w)
+        grid[rows[ok], cols[ok]] = True
+
+    def occupancy(self):
+        data = np.full(self.free.shape, -1, dtype=np.int8)
+        data[self.free] = 0
+        data[self.hit] = 100
+        return data
+
+    def known(self):
+        return self.free | self.hit
+
+
+@dataclass
+class RunResult:
+    coverage: float  # share of the reachable free area known
+    sim_time: float
+    travelled: float
+    collisions: int  # control steps the robot's footprint touched an obstacle
+    done: bool
+    goals: int
+    coverage_at: dict  # sim seconds -> coverage
+
+
+def explore(world, start, seconds, explorer, planner, dt=0.1, map_period=2.0, scan_period=0.2,
+            robot_radius=0.18, checkpoints=(100, 200, 300, 400, 600)):
+    """Drive `explorer` (exploration.Explorer) with `planner` (map_planner.MapPlanner) in
+    `world` from `start` (x, y, yaw) for `seconds` of simulated time."""
+    x, y, yaw = start
+    mapper = Mapper(world)
+    reachable = world.free_region(x, y)
+    clearance_grid = world.clearance()
+    travelled, collisions = 0.0, 0
+    next_map = next_scan = 0.0
+    map_is_new = False
+    ahead = math.inf
+    coverage_at = {}
+    now = 0.0
+    while now < seconds:
+        if now >= next_scan:
+            sx, sy = x + CAMERA_X * math.cos(yaw), y + CAMERA_X * math.sin(yaw)
+            angles, ranges = cast_fan(world, sx, sy, yaw)
+            mapper.integrate(sx, sy, yaw, angles, ranges)
+            ahead = _clearance(angles, ranges, robot_radius)
+            next_scan += scan_period
+        if now >= next_map:
+            planner.set_map(mapper.occupancy(), world.resolution, world.origin_x, world.origin_y)
+            map_is_new = True
+            next_map += map_period
+        if explorer.wants_plan(now, map_is_new):
+            map_is_new = False
+            plan = planner.plan(x, y, explorer.excluded_points(now), explorer.current_goal)
+            explorer.accept_plan(plan, now)
+        linear, angular = explorer.control(now, x, y, yaw, ahead)
+        nx = x + linear * math.cos(yaw) * dt
+        ny = y + linear * math.sin(yaw) * dt
+        row, col = world.cell(nx, ny)
+        if clearance_grid[row, col] < robot_radius:
+            collisions += 1  # the bumper: the base does not move into the wall
+        else:
+            travelled += math.hypot(nx - x, ny - y)
+            x, y = nx, ny
+        yaw = math.atan2(math.sin(yaw + angular * dt), math.cos(yaw + angular * dt))
+        now += dt
+        for mark in checkpoints:
+            if mark not in coverage_at and now >= mark:
+                coverage_at[mark] = _coverage(mapper, reachable)
+        if explorer.done:
+            break
+    return RunResult(
+        _coverage(mapper, reachable), now, travelled, collisions, explorer.done,
+        explorer.goals_reached, coverage_at,
+    )
+
+
+def _clearance(angles, ranges, half_width):
+    from explorer.scan_safety import clearance_ahead
+
+    increment = angles[1] - angles[0]
+    return clearance_ahead(ranges, angles[0], increment, 0.45, 8.0, half_width + 0.04, CAMERA_X)
+
+
+def _coverage(mapper, reachable):
+    return float((mapper.known() & reachable).sum()) / float(reachable.sum())
