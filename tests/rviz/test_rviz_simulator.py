@@ -60,3 +60,34 @@ def test_teleop_view_on_the_simulated_playground(ros):
     scan_y = rs.centroid(masks["scan"])[1]
     assert abs(robot_x - width / 2) < 0.1 * width and robot_y > 0.6 * height, what
     assert cloud_y < robot_y and scan_y < robot_y, what
+
+
+def test_top_down_view_follows_the_simulated_robot(ros):
+    ros.start(
+        ["roslaunch", "bullet_turtlebot", "simulator.launch", "world:=playground", "speed:=1"],
+        name="simulator",
+    )
+    ros.wait_for_topic("/odom", timeout=30)
+    # Drive a circle (radius 1 m) through the book's teleop input of the command mux.
+    twist = "{linear: {x: 0.3}, angular: {z: 0.3}}"
+    ros.start(
+        ["rostopic", "pub", "-r", "10", "/cmd_vel_mux/input/teleop", "geometry_msgs/Twist", twist],
+        name="teleop",
+    )
+    with rs.RvizSession(rc.RVIZ / "top_down.rviz", ros.env, ros.workdir / "rviz") as rviz:
+
+        def ready(img):
+            _, masks, counts = rc.measure(rviz, img)
+            trail = max(rs.extent(masks["odom"]))
+            return counts["robot"] > 300 and counts["scan"] > 100 and trail > 80
+
+        path, img = rviz.settle(ready, timeout=30)
+        view, masks, counts = rc.measure(rviz, img)
+    what = f"screenshot {path}; pixel counts {counts}"
+    assert counts["robot"] > 300, "robot model missing: " + what
+    assert counts["scan"] > 100, "laser scan missing: " + what
+    # The view follows base_footprint; the odometry arrows trail behind over > 0.8 m.
+    cx, cy = rc.view_centre(view)
+    robot_x, robot_y = rs.centroid(masks["robot"])
+    assert abs(robot_x - cx) < 15 and abs(robot_y - cy) < 15, what
+    assert max(rs.extent(masks["odom"])) > 80, "odometry trail too short: " + what
