@@ -1,0 +1,30 @@
+// slam_gmapping's private parameter names, mapped onto SlamParams. Shared by the live node
+// (which reads them from the parameter server) and slam_offline (name=value arguments).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "gmapping_lite/slam_params.h"
+
+namespace gmapping_lite {
+
+struct ParamEntry {
+  std::string name;
+  std::function<double(const SlamParams&)> get;
+  std::function<void(SlamParams*, double)> set;
+};
+
+// Every numeric parameter of the filter. maxRange / maxUrange are included; when they are not
+// set they come from the first scan's range_max (see rangeDefaults).
+const std::vector<ParamEntry>& paramTable();
+
+// Set one parameter by name; false if the name is unknown.
+bool setParam(SlamParams* params, const std::string& name, double value);
+
+// gmapping's defaults from a scan: maxRange = range_max - 0.01 (so "no return" readings at
+// range_max clear space), maxUrange = maxRange, each only if not set explicitly.
+void rangeDefaults(SlamParams* params, double range_max, bool max_range_set, bool max_urange_set);
+
+}  // namespace gmapping_lite

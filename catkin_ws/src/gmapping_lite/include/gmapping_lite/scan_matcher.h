@@ -1,0 +1,115 @@
+// Scan matcher in gmapping's spirit with a likelihood field: each beam end point is scored by
+// its distance to the nearest occupied cell's mean hit position, exp(-d^2 / 2 sigma^2). The
+// pose is found by hill climbing over x, y and yaw with a widened kernel (steps lstep / 2^k and
+// astep / 2^k at level k, under gmapping's odometry-reliability prior), then refined by a few
+// point-to-point ICP steps against the field's nearest hit positions.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "gmapping_lite/grid_map.h"
+#include "gmapping_lite/laser.h"
+#include "gmapping_lite/pose2.h"
+
+namespace gmapping_lite {
+
+struct MatcherParams {
+  double sigma = 0.05;       // score kernel: exp(-d^2 / 2 sigma^2)
+  int kernel_size = 1;       // level k uses sigma x max(1, 2^(kernel_size + 1 - k))
+  double lstep = 0.05;       // initial translational step (m)
+  double astep = 0.05;       // initial angular step (rad)
+  int iterations = 5;        // coarse-to-fine levels (steps halve at each)
+  double lsigma = 0.075;     // likelihood per beam: -d^2 / 2 lsigma^2, d capped at 3 lsigma
+  int lskip = 0;             // use every (lskip + 1)-th beam for matching
+  double max_range = 8.0;    // returns beyond this are ignored
+  double max_urange = 8.0;   // returns beyond this clear space but mark nothing
+  double fullness = 0.1;     // a cell with occupancy above this counts as occupied
+  double field_radius = 0.5; // how far the likelihood field looks for occupied cells (m)
+  // gmapping's odometry reliabilities: in the coarse levels a candidate's score is multiplied
+  // by exp(-linear * d^2 - angular * dtheta^2) for its distance from the odometry guess, so a
+  // featureless corridor cannot drag the pose far from where odometry put it.
+  double linear_odometry_reliability = 3.0;
+  double angular_odometry_reliability = 20.0;
+};
+
+// The beams of one scan that matching uses, as end points in the base frame.
+struct ScanPoints {
+  struct Point {
+    double hx, hy;  // end point
+  };
+  std::vector<Point> points;
+};
+
+// A flat, read-only likelihood field over the part of one particle's map a match can touch:
+// for every cell, the mean hit position of the nearest occupied cell within `radius`.
+class MatchField {
+ public:
+  void build(const GridMap& map, const CellIndex& min, const CellIndex& max, double fullness,
+             double radius);
+
+  // Squared distance from (x, y) to the nearest occupied mean, capped at radius^2.
+  double distance2(double x, double y) const {
+    double qx, qy;
+    return nearest(x, y, &qx, &qy);
+  }
+
+  // Like distance2, also giving the nearest occupied mean (unset when capped).
+  double nearest(double x, double y, double* qx, double* qy) const {
+    const int i = static_cast<int>(std::floor(x * inv_res_)) - x0_;
+    const int j = static_cast<int>(std::floor(y * inv_res_)) - y0_;
+    if (i < 0 || j < 0 || i >= w_ || j >= h_) return cap2_;
+    const std::size_t k = static_cast<std::size_t>(j) * w_ + i;
+    const float mx = near_x_[k];
+    if (std::isnan(mx)) return cap2_;
+    *qx = mx;
+    *qy = near_y_[k];
+    const double ex = x - *qx, ey = y - *qy;
+    return std::min(cap2_, ex * ex + ey * ey);
+  }
+
+ private:
+  int x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;
+  double inv_res_ = 20.0, cap2_ = 0.25;
+  std::vector<float> near_x_, near_y_;
+  std::vector<int> queue_;
+};
+
+class ScanMatcher {
+ public:
+  ScanMatcher(const MatcherParams& params, double resolution);
+
+  const MatcherParams& params() const { return params_; }
+
+  ScanPoints matchPoints(const LaserGeometry& laser, const Ranges& ranges) const;
+
+  // Prepare the field around `pose` for the given scan points.
+  void prepare(const GridMap& map, const Pose2& pose, const ScanPoints& scan);
+
+  double score(const Pose2& pose, const ScanPoints& scan) const;
+  // Log-likelihood of the scan at `pose`, and its score.
+  double likelihood(const Pose2& pose, const ScanPoints& scan, double* score) const;
+  // Hill-climb from `start`; returns the best score and writes the best pose.
+  double optimize(const Pose2& start, const ScanPoints& scan, Pose2* best) const;
+
+  // Convenience: prepare + optimize against `map`.
+  double match(const GridMap& map, const Pose2& start, const ScanPoints& scan, Pose2* best);
+
+ private:
+  double scoreAt(const Pose2& pose, const ScanPoints& scan, double inv_two_sigma2) const;
+  // Point-to-point ICP against the field's nearest means: finds the score's peak along
+  // diagonal ridges that axis-aligned climbing stalls on.
+  Pose2 refine(const Pose2& start, const ScanPoints& scan) const;
+
+  MatcherParams params_;
+  double resolution_;
+  MatchField field_;
+};
+
+// Enter one scan into a map at `pose` (all usable beams, not just the matching subset).
+void registerScan(GridMap* map, const Pose2& pose, const LaserGeometry& laser,
+                  const Ranges& ranges, double max_range, double max_urange);
+
+}  // namespace gmapping_lite

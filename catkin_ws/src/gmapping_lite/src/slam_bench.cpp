@@ -1,0 +1,108 @@
+// slam_bench: time the filter on the synthetic office tour (10 Hz scans, odometry that
+// drifts) and print a markdown table: time per processed scan, real-time factor, accuracy.
+// One core; scans that move the robot too little for an update still count in the real-time
+// factor, since a live node receives them too.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "gmapping_lite/particle_filter.h"
+#include "gmapping_lite/synthetic.h"
+
+using namespace gmapping_lite;  // NOLINT: a program, not a header
+
+namespace {
+
+struct Row {
+  std::string label;
+  int particles;
+  int beams;
+  SlamParams params;
+};
+
+SlamParams turtlebot() {
+  SlamParams p;
+  p.particles = 80;
+  p.linear_update = 0.5;
+  p.angular_update = 0.436;
+  p.minimum_score = 200;
+  p.motion = {0.01, 0.02, 0.01, 0.02};
+  p.matcher.max_range = 8.0;
+  p.matcher.max_urange = 6.0;
+  return p;
+}
+
+SlamParams defaults() {
+  SlamParams p;  // slam_gmapping's defaults; ranges from the 8 m laser
+  p.matcher.max_range = p.matcher.max_urange = 7.99;
+  return p;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::string(argv[1]) == "--quick";
+  const SyntheticWorld world = SyntheticWorld::office();
+  std::vector<Row> rows;
+  for (int beams : {320, 640})
+    for (int particles : {30, 80}) {
+      SlamParams p = defaults();
+      p.particles = particles;
+      rows.push_back({"defaults", particles, beams, p});
+    }
+  {
+    SlamParams p = defaults();
+    p.angular_update = 0.1;
+    p.linear_update = 0.1;
+    p.matcher.lskip = 10;
+    rows.push_back({"book: angular/linearUpdate 0.1, lskip 10", 30, 640, p});
+  }
+  {
+    SlamParams p = turtlebot();
+    p.particles = 30;
+    rows.push_back({"Turtlebot tuning, 30 particles", 30, 640, p});
+    rows.push_back({"Turtlebot tuning (80 particles)", 80, 640, turtlebot()});
+  }
+  if (quick) rows.resize(1);
+
+  std::printf("## gmapping_lite SLAM (synthetic office tour, 10 Hz scans, one core)\n\n");
+  std::printf("| settings | particles | beams | scans | updates | ms per update | "
+              "real-time factor | trajectory RMS (m) | odometry RMS (m) |\n");
+  std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+  for (const Row& row : rows) {
+    RunOptions options;
+    options.beams = row.beams;
+    const SyntheticRun run = simulateRun(world, officeTour(), options);
+    ParticleFilter filter(row.params);
+    const auto start = std::chrono::steady_clock::now();
+    for (const auto& s : run.steps) filter.addScan(s.odom, s.stamp, run.laser, s.ranges);
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double span = run.steps.back().stamp - run.steps.front().stamp;
+    // Accuracy of the best particle's trajectory against the truth, both from the start pose.
+    std::vector<const TrajectoryNode*> nodes;
+    for (auto n = filter.best().trajectory.get(); n; n = n->parent.get()) nodes.push_back(n);
+    double se = 0, so = 0;
+    std::size_t k = 0, matched = 0;
+    for (auto n = nodes.rbegin(); n != nodes.rend(); ++n) {
+      while (k < run.steps.size() && run.steps[k].stamp < (*n)->stamp - 1e-9) ++k;
+      if (k >= run.steps.size()) break;
+      const Pose2 truth = run.steps[k].truth.relativeTo(run.steps.front().truth);
+      se += std::pow((*n)->pose.x - truth.x, 2) + std::pow((*n)->pose.y - truth.y, 2);
+      so += std::pow(run.steps[k].odom.x - truth.x, 2) + std::pow(run.steps[k].odom.y - truth.y, 2);
+      ++matched;
+    }
+    std::printf("| %s | %d | %d | %zu | %d | %.1f | %.1fx | %.3f | %.3f |\n", row.label.c_str(),
+                row.particles, row.beams, run.steps.size(), filter.updates(),
+                1000.0 * wall / std::max(1, filter.updates()), span / wall,
+                std::sqrt(se / double(std::max<std::size_t>(1, matched))),
+                std::sqrt(so / double(std::max<std::size_t>(1, matched))));
+    std::fflush(stdout);
+  }
+  std::printf("\nReal-time factor: seconds of data per second of processing (target: 20x on "
+              "the defaults with 30 particles).\n");
+  return 0;
+}

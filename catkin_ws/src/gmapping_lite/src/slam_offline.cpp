@@ -1,0 +1,225 @@
+// slam_offline: run the SLAM library over a bag's scans and tf as fast as possible and write
+// the map in map_server's format (PGM + YAML), plus optionally the trajectory.
+//
+//   rosrun gmapping_lite slam_offline BAG [--out map] [--scan /scan] [--base-frame base_link]
+//       [--odom-frame odom] [--trajectory traj.csv] [--param name=value ...]
+#include <ros/time.h>
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <sensor_msgs/LaserScan.h>
+#include <tf2/buffer_core.h>
+#include <tf2/utils.h>
+#include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include "gmapping_lite/occupancy.h"
+#include "gmapping_lite/param_table.h"
+#include "gmapping_lite/particle_filter.h"
+#include "gmapping_lite/scan_input.h"
+
+using namespace gmapping_lite;  // NOLINT: a program, not a header
+
+namespace {
+
+struct Options {
+  std::string bag, out = "map", scan_topic = "/scan", base_frame = "base_link",
+                   odom_frame = "odom", trajectory;
+  SlamParams params;
+  bool max_range_set = false, max_urange_set = false;
+  double tilt_tolerance = 0.1;
+};
+
+int usage(const char* why) {
+  std::fprintf(stderr,
+               "slam_offline: %s\nusage: slam_offline BAG [--out BASE] [--scan TOPIC] "
+               "[--base-frame F] [--odom-frame F] [--trajectory CSV] [--param NAME=VALUE ...]\n",
+               why);
+  return 2;
+}
+
+std::string stripSlash(const std::string& f) { return !f.empty() && f[0] == '/' ? f.substr(1) : f; }
+
+bool parse(int argc, char** argv, Options* o, std::string* error) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&](std::string* dst) {
+      if (i + 1 >= argc) {
+        *error = a + " needs a value";
+        return false;
+      }
+      *dst = argv[++i];
+      return true;
+    };
+    if (a == "--out") {
+      if (!value(&o->out)) return false;
+    } else if (a == "--scan") {
+      if (!value(&o->scan_topic)) return false;
+    } else if (a == "--base-frame") {
+      if (!value(&o->base_frame)) return false;
+    } else if (a == "--odom-frame") {
+      if (!value(&o->odom_frame)) return false;
+    } else if (a == "--trajectory") {
+      if (!value(&o->trajectory)) return false;
+    } else if (a == "--param") {
+      std::string kv;
+      if (!value(&kv)) return false;
+      const auto eq = kv.find('=');
+      char* end = nullptr;
+      const double v = eq == std::string::npos ? 0 : std::strtod(kv.c_str() + eq + 1, &end);
+      if (eq == std::string::npos || !end || *end || !std::isfinite(v) ||
+          !setParam(&o->params, kv.substr(0, eq), v)) {
+        *error = "bad --param '" + kv + "' (expected NAME=NUMBER with a slam_gmapping name)";
+        return false;
+      }
+      o->max_range_set |= kv.substr(0, eq) == "maxRange";
+      o->max_urange_set |= kv.substr(0, eq) == "maxUrange";
+    } else if (!a.empty() && a[0] == '-') {
+      *error = "unknown option " + a;
+      return false;
+    } else if (o->bag.empty()) {
+      o->bag = a;
+    } else {
+      *error = "more than one bag given";
+      return false;
+    }
+  }
+  if (o->bag.empty()) *error = "no bag given";
+  return error->empty();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  std::string error;
+  if (!parse(argc, argv, &o, &error)) return usage(error.c_str());
+  o.base_frame = stripSlash(o.base_frame);
+  o.odom_frame = stripSlash(o.odom_frame);
+  ros::Time::init();
+  const auto wall_start = std::chrono::steady_clock::now();
+
+  rosbag::Bag bag;
+  try {
+    bag.open(o.bag, rosbag::bagmode::Read);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "slam_offline: cannot open %s: %s\n", o.bag.c_str(), e.what());
+    return 1;
+  }
+  // Pass 1: all of tf, so each scan can be placed whatever order the bag holds it in.
+  rosbag::View tf_view(bag, rosbag::TopicQuery(std::vector<std::string>{"/tf", "/tf_static"}));
+  const double span = (tf_view.getEndTime() - tf_view.getBeginTime()).toSec() + 10.0;
+  tf2::BufferCore tf(ros::Duration(std::max(10.0, span)));
+  std::size_t tf_count = 0;
+  for (const rosbag::MessageInstance& m : tf_view) {
+    const auto msg = m.instantiate<tf2_msgs::TFMessage>();
+    if (!msg) continue;
+    const bool is_static = m.getTopic() == "/tf_static";
+    for (const auto& t : msg->transforms) tf.setTransform(t, "bag", is_static);
+    ++tf_count;
+  }
+
+  rosbag::View scan_view(bag, rosbag::TopicQuery(std::vector<std::string>{o.scan_topic}));
+  if (scan_view.size() == 0) {
+    std::fprintf(stderr, "slam_offline: %s has no messages on %s\n", o.bag.c_str(),
+                 o.scan_topic.c_str());
+    return 1;
+  }
+  std::unique_ptr<ParticleFilter> filter;
+  std::map<std::string, std::pair<std::size_t, LaserGeometry>> lasers;
+  int scans = 0, dropped = 0;
+  double first_stamp = -1, last_stamp = 0;
+  for (const rosbag::MessageInstance& m : scan_view) {
+    const auto scan = m.instantiate<sensor_msgs::LaserScan>();
+    if (!scan || scan->ranges.empty()) continue;
+    ++scans;
+    const std::string frame = stripSlash(scan->header.frame_id);
+    auto it = lasers.find(frame);
+    if (it == lasers.end() || it->second.first != scan->ranges.size()) {
+      if (it != lasers.end())
+        std::fprintf(stderr, "slam_offline: scan on %s changed from %zu to %zu beams\n",
+                     frame.c_str(), it->second.first, scan->ranges.size());
+      geometry_msgs::TransformStamped mount;
+      try {
+        mount = tf.lookupTransform(o.base_frame, frame, ros::Time(0));
+      } catch (const tf2::TransformException& e) {
+        std::fprintf(stderr, "slam_offline: no transform from '%s' to laser frame '%s': %s\n",
+                     o.base_frame.c_str(), frame.c_str(), e.what());
+        return 1;
+      }
+      tf2::Transform laser_in_base;
+      tf2::fromMsg(mount.transform, laser_in_base);
+      LaserGeometry g;
+      if (!makeLaserGeometry(laser_in_base, scan->angle_min, scan->angle_increment,
+                             scan->ranges.size(), o.tilt_tolerance, &g, &error)) {
+        std::fprintf(stderr, "slam_offline: laser frame '%s': %s\n", frame.c_str(), error.c_str());
+        return 1;
+      }
+      it = lasers.insert_or_assign(frame, std::make_pair(scan->ranges.size(), g)).first;
+    }
+    geometry_msgs::TransformStamped odom_tf;
+    try {
+      odom_tf = tf.lookupTransform(o.odom_frame, o.base_frame, scan->header.stamp);
+    } catch (const tf2::TransformException& e) {
+      if (++dropped <= 3)
+        std::fprintf(stderr, "slam_offline: scan at %.3f dropped: no '%s' -> '%s': %s\n",
+                     scan->header.stamp.toSec(), o.odom_frame.c_str(), o.base_frame.c_str(),
+                     e.what());
+      continue;
+    }
+    if (!filter) {
+      rangeDefaults(&o.params, scan->range_max, o.max_range_set, o.max_urange_set);
+      filter = std::make_unique<ParticleFilter>(o.params);
+    }
+    const Pose2 odom(odom_tf.transform.translation.x, odom_tf.transform.translation.y,
+                     tf2::getYaw(odom_tf.transform.rotation));
+    const double stamp = scan->header.stamp.toSec();
+    if (first_stamp < 0) first_stamp = stamp;
+    last_stamp = stamp;
+    filter->addScan(odom, stamp, it->second.second,
+                    toRanges(scan->ranges, scan->range_min, scan->range_max));
+  }
+  if (!filter) {
+    std::fprintf(stderr, "slam_offline: no scan could be placed (%d scans, %d without odometry)\n",
+                 scans, dropped);
+    return 1;
+  }
+  const Particle& best = filter->best();
+  const OccupancyMap occ = toOccupancy(best.map, o.params.xmin, o.params.ymin, o.params.xmax,
+                                       o.params.ymax, o.params.occ_thresh);
+  if (!writeMapFiles(occ, o.out, &error)) {
+    std::fprintf(stderr, "slam_offline: %s\n", error.c_str());
+    return 1;
+  }
+  if (!o.trajectory.empty()) {
+    std::vector<const TrajectoryNode*> nodes;
+    for (auto n = best.trajectory.get(); n; n = n->parent.get()) nodes.push_back(n);
+    const std::string tmp = o.trajectory + ".tmp";
+    {
+      std::ofstream f(tmp);
+      f << "stamp,x,y,theta\n";
+      char line[128];
+      for (auto n = nodes.rbegin(); n != nodes.rend(); ++n) {
+        std::snprintf(line, sizeof(line), "%.6f,%.6f,%.6f,%.6f\n", (*n)->stamp, (*n)->pose.x,
+                      (*n)->pose.y, (*n)->pose.theta);
+        f << line;
+      }
+    }
+    std::rename(tmp.c_str(), o.trajectory.c_str());
+  }
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  const double duration = last_stamp - first_stamp;
+  std::printf("slam_offline: %d scans (%d without odometry), %d updates, %zu tf messages; "
+              "%.1f s of data in %.2f s (%.1fx real time); map %dx%d written to %s.pgm/.yaml\n",
+              scans, dropped, filter->updates(), tf_count, duration, wall,
+              wall > 0 ? duration / wall : 0.0, occ.width, occ.height, o.out.c_str());
+  return 0;
+}

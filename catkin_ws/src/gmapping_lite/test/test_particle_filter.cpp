@@ -1,0 +1,125 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gmapping_lite/particle_filter.h"
+#include "gmapping_lite/synthetic.h"
+
+using namespace gmapping_lite;  // NOLINT: test file
+
+namespace {
+
+// Poses of a trajectory expressed relative to its first pose.
+Pose2 fromStart(const Pose2& start, const Pose2& p) { return p.relativeTo(start); }
+
+double rmsError(const std::vector<Pose2>& a, const std::vector<Pose2>& b) {
+  double s = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    s += std::pow(a[i].x - b[i].x, 2) + std::pow(a[i].y - b[i].y, 2);
+  return std::sqrt(s / double(a.size()));
+}
+
+SlamParams turtlebotParams() {
+  SlamParams p;
+  p.particles = 30;
+  p.linear_update = 0.5;
+  p.angular_update = 0.436;
+  p.matcher.max_range = 8.0;
+  p.matcher.max_urange = 6.0;
+  p.minimum_score = 200;
+  p.motion = {0.01, 0.02, 0.01, 0.02};
+  return p;
+}
+
+}  // namespace
+
+TEST(ParticleFilter, ProcessesFirstScanThenOnlyAfterEnoughMotion) {
+  SlamParams params;
+  params.particles = 5;
+  params.linear_update = 1.0;
+  params.angular_update = 0.5;
+  ParticleFilter filter(params);
+  const LaserGeometry laser = LaserGeometry::planar(Pose2(), -0.5, 0.1, 11);
+  const Ranges ranges(11, 3.0f);
+  EXPECT_TRUE(filter.addScan(Pose2(), 0.0, laser, ranges).processed);
+  EXPECT_FALSE(filter.addScan(Pose2(0.5, 0, 0), 0.1, laser, ranges).processed);
+  EXPECT_FALSE(filter.addScan(Pose2(0.9, 0, 0.2), 0.2, laser, ranges).processed);
+  EXPECT_TRUE(filter.addScan(Pose2(1.0, 0, 0.2), 0.3, laser, ranges).processed);
+  EXPECT_FALSE(filter.addScan(Pose2(1.0, 0, 0.6), 0.4, laser, ranges).processed);
+  EXPECT_TRUE(filter.addScan(Pose2(1.0, 0, 0.75), 0.5, laser, ranges).processed);
+  EXPECT_EQ(filter.updates(), 3);
+}
+
+TEST(ParticleFilter, TemporalUpdateProcessesAStillRobot) {
+  SlamParams params;
+  params.particles = 3;
+  params.temporal_update = 1.0;
+  ParticleFilter filter(params);
+  const LaserGeometry laser = LaserGeometry::planar(Pose2(), -0.5, 0.1, 11);
+  const Ranges ranges(11, 3.0f);
+  EXPECT_TRUE(filter.addScan(Pose2(), 0.0, laser, ranges).processed);
+  EXPECT_FALSE(filter.addScan(Pose2(), 0.5, laser, ranges).processed);
+  EXPECT_TRUE(filter.addScan(Pose2(), 1.2, laser, ranges).processed);
+}
+
+TEST(ParticleFilter, EntropyAndNeffStartUniform) {
+  SlamParams params;
+  params.particles = 30;
+  ParticleFilter filter(params);
+  EXPECT_NEAR(filter.neff(), 30.0, 1e-9);
+  EXPECT_NEAR(filter.entropy(), std::log(30.0), 1e-9);
+}
+
+TEST(ParticleFilter, BeatsOdometryOnTheOfficeTour) {
+  const SyntheticWorld world = SyntheticWorld::office();
+  RunOptions options;  // Turtlebot-like laser: 640 beams over 58 degrees, 8 m
+  const SyntheticRun run = simulateRun(world, officeTour(), options);
+  ParticleFilter filter(turtlebotParams());
+  std::vector<double> stamps;
+  std::vector<Pose2> truth, odom;
+  int resamples = 0;
+  for (const auto& step : run.steps) {
+    const UpdateReport r = filter.addScan(step.odom, step.stamp, run.laser, step.ranges);
+    resamples += r.resampled;
+    if (!r.processed) continue;
+    truth.push_back(fromStart(run.steps.front().truth, step.truth));
+    odom.push_back(step.odom);  // odometry starts at zero at the first pose
+  }
+  // The best particle's trajectory, oldest first.
+  std::vector<Pose2> slam;
+  for (auto n = filter.best().trajectory; n; n = n->parent) slam.insert(slam.begin(), n->pose);
+  ASSERT_EQ(slam.size(), truth.size());
+  const double e_odom = rmsError(odom, truth), e_slam = rmsError(slam, truth);
+  RecordProperty("odom_rms", std::to_string(e_odom));
+  RecordProperty("slam_rms", std::to_string(e_slam));
+  std::printf("updates %zu, resamples %d, odometry RMS %.3f m, SLAM RMS %.3f m\n", slam.size(),
+              resamples, e_odom, e_slam);
+  EXPECT_GT(e_odom, 0.3);  // the odometry really drifts
+  EXPECT_LT(e_slam, e_odom / 3.0);
+  EXPECT_LT(e_slam, 0.10);
+  // The last pose returns to the start: the map frame stays registered.
+  EXPECT_LT(std::hypot(slam.back().x - truth.back().x, slam.back().y - truth.back().y), 0.15);
+}
+
+TEST(ParticleFilter, ParticlesShareMapMemory) {
+  const SyntheticWorld world = SyntheticWorld::office();
+  RunOptions options;
+  const SyntheticRun run = simulateRun(world, officeTour(), options);
+  SlamParams params = turtlebotParams();
+  params.particles = 30;
+  params.resample_threshold = 1.0;  // resample at every update
+  ParticleFilter filter(params);
+  int resamples = 0;
+  for (std::size_t i = 0; i < run.steps.size() / 3; ++i)
+    resamples += filter.addScan(run.steps[i].odom, run.steps[i].stamp, run.laser,
+                                run.steps[i].ranges).resampled;
+  EXPECT_GT(resamples, 10);
+  std::size_t total = 0, shared = 0;
+  for (const auto& p : filter.particles()) {
+    total += p.map.patchCount();
+    shared += p.map.sharedPatchCount();
+  }
+  // Even right after every particle wrote its latest scan, a good share of each map is
+  // still held in common with other particles (the parts no recent scan touched).
+  EXPECT_GT(double(shared) / double(total), 0.3);
+}

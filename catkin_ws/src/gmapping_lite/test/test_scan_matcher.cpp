@@ -1,0 +1,96 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "gmapping_lite/scan_matcher.h"
+#include "gmapping_lite/synthetic.h"
+
+using namespace gmapping_lite;  // NOLINT: test file
+
+namespace {
+unsigned visits(const GridMap& map, int i, int j) {
+  const Cell* c = map.find(i, j);
+  return c ? c->visits : 0u;
+}
+
+struct Fixture {
+  SyntheticWorld world = SyntheticWorld::office();
+  RunOptions options;
+  LaserGeometry laser;
+
+  Ranges scanAt(const Pose2& pose) {
+    std::vector<Pose2> still{pose};
+    SyntheticRun run = simulateRun(world, still, options);
+    laser = run.laser;
+    return run.steps.front().ranges;
+  }
+};
+}  // namespace
+
+TEST(ScanMatcher, RecoversAPerturbedPose) {
+  Fixture f;
+  MatcherParams params;
+  GridMap map(0.05);
+  // Build a map from scans taken around one spot, as the filter would.
+  const Pose2 truth(3.0, 5.0, 0.2);
+  for (double a = -1.2; a <= 1.2; a += 0.3) {
+    const Pose2 p(truth.x, truth.y, truth.theta + a);
+    const Ranges r = f.scanAt(p);
+    registerScan(&map, p, f.laser, r, params.max_range, params.max_urange);
+  }
+  ScanMatcher matcher(params, 0.05);
+  const Ranges ranges = f.scanAt(truth);
+  const ScanPoints points = matcher.matchPoints(f.laser, ranges);
+  ASSERT_GT(points.points.size(), 500u);
+  const Pose2 guess(truth.x + 0.08, truth.y - 0.06, truth.theta + 0.04);
+  Pose2 best;
+  const double score = matcher.match(map, guess, points, &best);
+  EXPECT_GT(score, 0.8 * points.points.size());
+  EXPECT_NEAR(best.x, truth.x, 0.02);
+  EXPECT_NEAR(best.y, truth.y, 0.02);
+  EXPECT_NEAR(best.theta, truth.theta, 0.01);
+  // The likelihood is higher at the match than at the guess.
+  EXPECT_GT(matcher.likelihood(best, points, nullptr), matcher.likelihood(guess, points, nullptr));
+}
+
+TEST(ScanMatcher, LskipThinsTheBeams) {
+  Fixture f;
+  MatcherParams params;
+  params.lskip = 9;
+  ScanMatcher matcher(params, 0.05);
+  const Ranges ranges = f.scanAt(Pose2(3.0, 5.0, 0.0));
+  const ScanPoints points = matcher.matchPoints(f.laser, ranges);
+  EXPECT_LE(points.points.size(), 64u);
+  EXPECT_GE(points.points.size(), 50u);
+}
+
+TEST(RegisterScan, InfClearsToMaxUrangeNanAndInvalidSkipped) {
+  const float inf = std::numeric_limits<float>::infinity();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  LaserGeometry laser = LaserGeometry::planar(Pose2(), -M_PI / 2, M_PI / 2, 3);  // -y, +x, +y
+  GridMap map(0.1);
+  registerScan(&map, Pose2(0.05, 0.05, 0.0), laser, Ranges{inf, nan, 2.0f}, 8.0, 3.0);
+  // +inf along -y: free all the way to maxUrange (3 m), no hit.
+  for (int j = -1; j >= -29; --j) {
+    ASSERT_NE(map.find(0, j), nullptr) << j;
+    EXPECT_EQ(map.find(0, j)->hits, 0u);
+  }
+  EXPECT_EQ(visits(map, 0, -30), 1u);
+  EXPECT_EQ(visits(map, 0, -31), 0u);
+  // NaN along +x: nothing.
+  EXPECT_EQ(visits(map, 5, 0), 0u);
+  // 2 m along +y: free then a hit.
+  EXPECT_EQ(map.find(0, 20)->hits, 1u);
+  EXPECT_EQ(map.find(0, 10)->hits, 0u);
+}
+
+TEST(RegisterScan, BeyondMaxUrangeClearsWithoutHitBeyondMaxRangeIgnored) {
+  LaserGeometry laser = LaserGeometry::planar(Pose2(), 0.0, M_PI / 2, 2);  // +x, +y
+  GridMap map(0.1);
+  registerScan(&map, Pose2(0.05, 0.05, 0.0), laser, Ranges{5.0f, 9.0f}, 8.0, 3.0);
+  EXPECT_EQ(map.find(29, 0)->hits, 0u);
+  EXPECT_EQ(map.find(30, 0)->hits, 0u);
+  EXPECT_EQ(visits(map, 31, 0), 0u);
+  EXPECT_EQ(visits(map, 0, 5), 0u);
+}
