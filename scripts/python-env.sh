@@ -1,6 +1,3 @@
-# Sourced: make every python3 Debian's, even when a pyenv shim comes first on PATH.
+# Sourced: make python3 Debian's, even when a pyenv shim comes first on PATH (pyenv's
+# python3 cannot import catkin_pkg or rospy).
 export PYENV_VERSION=system
-case ":$PATH:" in
-  /usr/bin:*) ;;
-  *) export PATH="/usr/bin:$PATH" ;;
-esac

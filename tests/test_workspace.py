@@ -12,7 +12,7 @@ def test_python3_is_debian_after_sourcing(tmp_path):
             "bash",
             "-c",
             "source catkin_ws/devel/setup.bash && "
-            "python3 -c 'import rospy, sys; print(sys.executable)'",
+            "python3 -c 'import os, rospy, sys; print(os.path.realpath(sys.executable))'",
         ],
         env=env,
         capture_output=True,
