@@ -2,7 +2,6 @@ import math
 
 import numpy as np
 import pytest
-
 from rosbook_demo.scoring import score, wall_hits, world_from_map
 from rosbook_demo.trajectory import Trajectory
 

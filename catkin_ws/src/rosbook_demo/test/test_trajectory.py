@@ -1,7 +1,6 @@
 import math
 
 import pytest
-
 from rosbook_demo.trajectory import (
     Trajectory,
     chain,
@@ -14,7 +13,7 @@ from rosbook_demo.trajectory import (
 
 
 def close(a, b, tol=1e-9):
-    return all(abs(x - y) < tol for x, y in zip(a, b))
+    return all(abs(x - y) < tol for x, y in zip(a, b, strict=True))
 
 
 def test_compose_then_inverse_is_identity():

@@ -59,7 +59,7 @@ class Trajectory:
 def chain(outer, inner):
     """outer(t) ∘ inner(t) at inner's stamps, e.g. map→odom ∘ odom→base = map→base."""
     return Trajectory(
-        inner.t, [compose(outer.at(t), tuple(p)) for t, p in zip(inner.t, inner.poses)]
+        inner.t, [compose(outer.at(t), tuple(p)) for t, p in zip(inner.t, inner.poses, strict=True)]
     )
 
 
