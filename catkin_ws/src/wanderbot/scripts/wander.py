@@ -25,7 +25,8 @@ class WanderNode:
         self.drive_time = positive_number("~drive_time", rospy.get_param("~drive_time", 30.0))
         self.spin_time = positive_number("~spin_time", rospy.get_param("~spin_time", 5.0))
         self.lock = threading.Lock()
-        self.range_ahead = None  # nothing seen yet: do not drive blind
+        self.range_ahead = None
+        self.got_scan = False
         self.cmd_vel_pub = rospy.Publisher("cmd_vel", Twist, queue_size=1)
         rospy.Subscriber("scan", LaserScan, self.scan_callback, queue_size=1)
 
@@ -33,11 +34,12 @@ class WanderNode:
         closest = min_range(msg.ranges, msg.range_min, msg.range_max)
         with self.lock:
             self.range_ahead = closest
+            self.got_scan = True
 
     def run(self):
         rate = rospy.Rate(10)
-        while not rospy.is_shutdown() and rospy.get_rostime().is_zero():
-            rospy.sleep(0.01)  # sim time: wait for /clock
+        while not rospy.is_shutdown() and (rospy.get_rostime().is_zero() or not self.got_scan):
+            rospy.sleep(0.05)  # wait for /clock (sim time) and a first look ahead
         wanderer = Wanderer(rospy.get_time(), self.min_range, self.drive_time, self.spin_time)
         rospy.on_shutdown(lambda: self.cmd_vel_pub.publish(Twist()))
         state = None

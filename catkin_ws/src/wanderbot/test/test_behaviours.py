@@ -58,8 +58,9 @@ def test_wanderer_treats_unknown_or_nan_range_as_blocked():
 def test_wanderer_spins_again_when_still_blocked_after_spinning():
     w = Wanderer(0.0)
     w.update(1.0, 0.5)
-    assert w.update(6.1, 0.5) == Wanderer.DRIVE
-    assert w.update(6.2, 0.5) == Wanderer.SPIN
+    assert w.update(6.1, 0.5) == Wanderer.SPIN  # no forward command while blocked
+    assert w.update(11.0, 3.0) == Wanderer.SPIN  # the second spin runs its full 5 s
+    assert w.update(11.2, 3.0) == Wanderer.DRIVE
 
 
 def test_param_checks():

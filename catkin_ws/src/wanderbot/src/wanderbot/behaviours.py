@@ -26,7 +26,8 @@ class TrafficLight:
 
 class Wanderer:
     """wander: drive until an obstacle is closer than `min_range` or `drive_time` passes,
-    then spin in place for `spin_time`, and repeat.
+    then spin in place for `spin_time`, and repeat. A spin that ends facing an obstacle is
+    followed by another spin (the book drives for one cycle, then turns again).
 
     `range_ahead` None means the scan said nothing usable (all NaN, or no scan yet): the
     robot does not drive blind into it, it treats it as blocked.
@@ -51,8 +52,12 @@ class Wanderer:
                 self.state = self.SPIN
                 self.state_change_time = now + self.spin_time
         elif now > self.state_change_time:
-            self.state = self.DRIVE
-            self.state_change_time = now + self.drive_time
+            if self.blocked(range_ahead):
+                # Still blocked: another spin, rather than one forward command into it.
+                self.state_change_time = now + self.spin_time
+            else:
+                self.state = self.DRIVE
+                self.state_change_time = now + self.drive_time
         return self.state
 
     def command(self, forward_speed, turn_speed):

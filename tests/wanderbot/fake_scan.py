@@ -1,0 +1,57 @@
+#!/usr/bin/python3
+"""Publish synthetic LaserScans on `scan` at 10 Hz following a schedule: PATTERN@SECONDS ...
+(seconds from the first subscriber). Patterns: clear (NaN and +inf only), near (0.5 m in one
+beam, NaN elsewhere), minus (one -inf beam), allnan, far (2.0 m everywhere)."""
+
+import math
+import sys
+import time
+
+import rospy
+from sensor_msgs.msg import LaserScan
+
+N = 640
+
+
+def ranges(pattern):
+    nan, inf = math.nan, math.inf
+    if pattern == "clear":
+        return [nan if i % 2 else inf for i in range(N)]
+    if pattern == "near":
+        return [0.5 if i == 100 else nan for i in range(N)]
+    if pattern == "minus":
+        return [-inf if i == 500 else inf for i in range(N)]
+    if pattern == "allnan":
+        return [nan] * N
+    if pattern == "far":
+        return [2.0] * N
+    raise SystemExit(f"fake_scan: unknown pattern {pattern}")
+
+
+def main():
+    plan = []
+    for arg in rospy.myargv()[1:]:
+        pattern, _, at = arg.partition("@")
+        ranges(pattern)
+        plan.append((float(at), pattern))
+    rospy.init_node("fake_scan")
+    pub = rospy.Publisher("scan", LaserScan, queue_size=10)
+    while pub.get_num_connections() == 0 and not rospy.is_shutdown():
+        time.sleep(0.02)
+    start = time.monotonic()
+    while not rospy.is_shutdown():
+        elapsed = time.monotonic() - start
+        current = [p for at, p in plan if at <= elapsed]
+        scan = LaserScan()
+        scan.header.stamp = rospy.Time.now()
+        scan.header.frame_id = "camera_depth_frame"
+        scan.angle_min, scan.angle_max = -0.5, 0.5
+        scan.angle_increment = 1.0 / (N - 1)
+        scan.range_min, scan.range_max = 0.45, 8.0
+        scan.ranges = ranges(current[-1] if current else "clear")
+        pub.publish(scan)
+        time.sleep(0.1)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
