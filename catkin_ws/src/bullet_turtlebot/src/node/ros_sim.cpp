@@ -380,9 +380,16 @@ int RosSimulator::run() {
   if (publish_static_tf_) publish_static_tf();
   ros::WallTime anchor_wall = ros::WallTime::now();
   double anchor_sim = sim_.now();
+  ros::WallTime last_paused_clock;
   while (ros::ok()) {
     ros::spinOnce();
     if (paused_) {
+      // Keep repeating the (frozen) time so nodes started meanwhile learn it.
+      const ros::WallTime now = ros::WallTime::now();
+      if ((now - last_paused_clock).toSec() >= 0.1) {
+        publish_clock();
+        last_paused_clock = now;
+      }
       ros::WallDuration(0.002).sleep();
       anchor_wall = ros::WallTime::now();
       anchor_sim = sim_.now();
