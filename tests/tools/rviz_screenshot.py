@@ -230,15 +230,21 @@ def ogre_windows(xenv):
     )
     if done.returncode != 0:
         raise RvizError("xwininfo failed: " + done.stderr.strip())
+    rects = parse_ogre_windows(done.stdout)
+    if not rects:
+        raise RvizError("no render window found in the X tree:\n" + done.stdout)
+    return rects
+
+
+def parse_ogre_windows(tree):
+    """Unnamed windows larger than 50×50 px in `xwininfo -root -tree` output, largest first."""
     rects = []
-    for line in done.stdout.splitlines():
+    for line in tree.splitlines():
         match = _WINDOW.match(line)
         if match:
             w, h, x, y = (int(v) for v in match.groups())
             if w > 50 and h > 50:
                 rects.append((x, y, w, h))
-    if not rects:
-        raise RvizError("no render window found in the X tree:\n" + done.stdout)
     return sorted(rects, key=lambda r: r[2] * r[3], reverse=True)
 
 
@@ -265,7 +271,7 @@ def count_rgb(img, rgb, tol=12):
 
 
 def hsv(img):
-    """Hue (degrees), saturation and value (0..1) arrays of an RGB image."""
+    """Hue (degrees; NaN for greys), saturation and value (0..1) arrays of an RGB image."""
     rgb = img.astype(np.float32) / 255.0
     mx = rgb.max(axis=2)
     mn = rgb.min(axis=2)
@@ -278,7 +284,7 @@ def hsv(img):
         [((g - b) / safe) % 6.0, (b - r) / safe + 2.0],
         (r - g) / safe + 4.0,
     )
-    hue = np.where(span > 0, hue * 60.0, 0.0)
+    hue = np.where(span > 0, hue * 60.0, np.nan)  # greys have no hue: never in a hue range
     return hue, sat, mx
 
 

@@ -1,0 +1,68 @@
+"""The screenshot helper's pure parts (no X server, no ROS): finding rviz's render
+windows in xwininfo's tree, and the colour measurements the view tests rely on."""
+
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from rviz_checks import rs  # noqa: E402
+
+# Trimmed from a real `xwininfo -root -tree` of rviz 1.14 with two Image displays.
+TREE = """
+  Root window id: 0x50d (the root window) (has no name)
+     4 children:
+     0x200010 "teleop.rviz - RViz": ("rviz" "rviz")  1280x800+0+0  +0+0
+        8 children:
+        0x200127 "rviz": ("rviz" "rviz")  1280x40+0+22  +0+22
+        0x200115 "rviz": ("rviz" "rviz")  342x143+0+211  +0+211
+           0x200113 "rviz": ("rviz" "rviz")  342x121+0+22  +0+233
+              1 child:
+              0x600008 (has no name): ()  342x121+0+0  +0+233
+        0x20010b "rviz": ("rviz" "rviz")  342x143+0+62  +0+62
+              0x600006 (has no name): ()  342x121+0+0  +0+84
+           0x200016 "rviz": ("rviz" "rviz")  900x709+16+0  +364+62
+              1 child:
+              0x600004 (has no name): ()  900x709+0+0  +364+62
+     0x400001 (has no name): ()  1x1+0+0  +0+0
+"""
+
+
+def test_render_windows_are_the_unnamed_ones_largest_first():
+    assert rs.parse_ogre_windows(TREE) == [
+        (364, 62, 900, 709),
+        (0, 233, 342, 121),
+        (0, 84, 342, 121),
+    ]
+    assert rs.parse_ogre_windows("") == []
+
+
+def test_hsv_of_primaries_and_greys():
+    img = np.array([[[255, 0, 0], [0, 255, 0], [0, 0, 255], [255, 0, 255], [48, 48, 48]]])
+    hue, sat, val = rs.hsv(img.astype(np.uint8))
+    assert hue[0, :4].tolist() == pytest.approx([0, 120, 240, 300])
+    assert sat[0].tolist() == pytest.approx([1, 1, 1, 1, 0])
+    assert val[0, 4] == pytest.approx(48 / 255) and np.isnan(hue[0, 4])
+
+
+def test_masks_counts_centroid_extent():
+    img = np.full((10, 20, 3), 48, dtype=np.uint8)
+    img[2:4, 5:15] = (219, 148, 76)  # a tan bar, 2 × 10 px
+    mask = rs.mask_hsv(img, hue=(15, 45), sat=(0.3, 0.9))
+    assert int(mask.sum()) == 20
+    assert rs.count_rgb(img, (219, 148, 76), tol=0) == 20
+    assert rs.count_hsv(img, hue=(330, 10)) == 0  # a wrapping range (reds); greys never match
+    assert rs.centroid(mask) == pytest.approx((9.5, 2.5))
+    assert rs.extent(mask) == (10, 2)
+    empty = np.zeros((3, 3), bool)
+    assert rs.centroid(empty) is None and rs.extent(empty) == (0, 0)
+    assert rs.is_blank(np.full((4, 4, 3), 48, np.uint8)) and not rs.is_blank(img)
+    assert rs.crop(img, (5, 2, 10, 2)).shape == (2, 10, 3)
+
+
+def test_missing_config_is_a_clear_error(tmp_path):
+    with pytest.raises(FileNotFoundError, match="rviz config not found"):
+        rs.RvizSession(tmp_path / "nope.rviz")
