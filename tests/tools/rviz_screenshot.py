@@ -179,6 +179,7 @@ class RvizSession:
         if done.returncode != 0:
             raise RvizError(f"import failed: {done.stderr.strip()}")
         os.replace(tmp, out)  # a reader never sees half a PNG
+        self._view = None  # the layout may still be settling: look it up again
         return out, load(out)
 
     def view_rect(self):
