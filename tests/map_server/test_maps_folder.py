@@ -30,3 +30,24 @@ def test_willow_is_the_office_map():
     office = map_io.load_map(MAPS / "office.yaml")
     np.testing.assert_array_equal(willow.data, office.data)
     assert (willow.resolution, willow.origin) == (office.resolution, office.origin)
+
+
+SHARED_WILLOW = REPO.parent / "shared" / "data" / "willow-full.pgm"
+
+
+@pytest.mark.skipif(not SHARED_WILLOW.exists(), reason="shared willow-full.pgm not present")
+def test_reads_a_real_gimp_made_pgm(tmp_path):
+    """The Willow Garage plan from Stage's examples (read in place, never copied here)."""
+    from PIL import Image
+
+    (tmp_path / "willow.yaml").write_text(
+        f"image: {SHARED_WILLOW}\nresolution: 0.1\norigin: [0, 0, 0]\nnegate: 0\n"
+        "occupied_thresh: 0.65\nfree_thresh: 0.196\n"
+    )
+    omap = map_io.load_map(tmp_path / "willow.yaml")
+    assert (omap.width, omap.height) == (540, 587)
+    grey = np.asarray(Image.open(SHARED_WILLOW).convert("L"), dtype=np.float64)
+    occ = (255.0 - grey[::-1]) / 255.0
+    expected = np.where(occ > 0.65, 100, np.where(occ < 0.196, 0, -1))
+    np.testing.assert_array_equal(omap.data, expected)
+    assert (omap.data == 100).sum() > 5000 and (omap.data == 0).sum() > 100000
