@@ -12,6 +12,7 @@ from scipy import ndimage
 REPO = Path(__file__).resolve().parents[2]
 WORLDS = REPO / "catkin_ws" / "src" / "bullet_turtlebot" / "worlds"
 CAMERA_X = -0.087  # camera_depth_frame behind base_footprint (URDF)
+KINECT_FOV = math.radians(58)
 
 
 def read_pgm(path):
@@ -86,7 +87,7 @@ class GridWorld:
         return labels == labels[row, col]
 
 
-def cast_fan(world, x, y, yaw, fov=math.radians(58), beams=80, range_min=0.45, range_max=8.0):
+def cast_fan(world, x, y, yaw, fov=KINECT_FOV, beams=80, range_min=0.45, range_max=8.0):
     """(angles, ranges) of a scan from a sensor at (x, y, yaw); REP 117 special values:
     +inf for nothing within range_max, -inf for a hit closer than range_min."""
     angles = np.linspace(-fov / 2, fov / 2, beams)
@@ -111,17 +112,23 @@ class Mapper:
         self.hit = np.zeros(world.occupied.shape, dtype=bool)
 
     def integrate(self, x, y, yaw, angles, ranges, range_max=8.0):
+        """Add one scan taken at (x, y, yaw); NaN and -inf beams carry no information."""
+        angles = np.asarray(angles, dtype=float)
+        ranges = np.asarray(ranges, dtype=float)
+        use = ~np.isnan(ranges) & ~np.isneginf(ranges)
+        angles, ranges = angles[use], ranges[use]
+        reach = np.where(np.isfinite(ranges), np.minimum(ranges, range_max), range_max)
         step = self.world.resolution / 2
-        for a, r in zip(angles, ranges, strict=True):
-            if np.isneginf(r) or np.isnan(r):
-                continue
-            reach = min(r, range_max) if np.isfinite(r) else range_max
-            t = np.arange(0.0, reach - step, step)
-            rows, cols = self.world.cell(x + np.cos(yaw + a) * t, y + np.sin(yaw + a) * t)
-            self._mark(self.free, rows, cols)
-            if np.isfinite(r):
-                row, col = self.world.cell(x + np.cos(yaw + a) * r, y + np.sin(yaw + a) * r)
-                self._mark(self.hit, np.atleast_1d(row), np.atleast_1d(col))
+        t = np.arange(0.0, range_max, step)
+        cos, sin = np.cos(yaw + angles)[:, None], np.sin(yaw + angles)[:, None]
+        along = t[None, :] < reach[:, None] - step
+        rows, cols = self.world.cell(x + cos * t, y + sin * t)
+        self._mark(self.free, rows[along], cols[along])
+        ends = np.isfinite(ranges)
+        rows, cols = self.world.cell(
+            x + cos[ends, 0] * ranges[ends], y + sin[ends, 0] * ranges[ends]
+        )
+        self._mark(self.hit, rows, cols)
 
     @staticmethod
     def _mark(grid, rows, cols):
@@ -150,8 +157,18 @@ class RunResult:
     coverage_at: dict  # sim seconds -> coverage
 
 
-def explore(world, start, seconds, explorer, planner, dt=0.1, map_period=2.0, scan_period=0.2,
-            robot_radius=0.18, checkpoints=(100, 200, 300, 400, 600)):
+def explore(
+    world,
+    start,
+    seconds,
+    explorer,
+    planner,
+    dt=0.1,
+    map_period=2.0,
+    scan_period=0.2,
+    robot_radius=0.18,
+    checkpoints=(100, 200, 300, 400, 600),
+):
     """Drive `explorer` (exploration.Explorer) with `planner` (map_planner.MapPlanner) in
     `world` from `start` (x, y, yaw) for `seconds` of simulated time."""
     x, y, yaw = start
@@ -196,8 +213,13 @@ def explore(world, start, seconds, explorer, planner, dt=0.1, map_period=2.0, sc
         if explorer.done:
             break
     return RunResult(
-        _coverage(mapper, reachable), now, travelled, collisions, explorer.done,
-        explorer.goals_reached, coverage_at,
+        _coverage(mapper, reachable),
+        now,
+        travelled,
+        collisions,
+        explorer.done,
+        explorer.goals_reached,
+        coverage_at,
     )
 
 

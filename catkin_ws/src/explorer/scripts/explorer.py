@@ -8,23 +8,28 @@ latched). See the package README for the parameters.
 """
 
 import math
+import os
 import sys
 import threading
 import time
 
-import rospy
-import tf2_ros
-from explorer.exploration import Explorer, ExplorerParams
-from explorer.follower import FollowerParams
-from explorer.map_message import MapFormatError, decode_occupancy_grid
-from explorer.map_planner import MapPlanner, PlannerParams
-from explorer.params import ParamError, non_negative, positive
-from explorer.recovery import RecoveryParams
-from explorer.scan_safety import clearance_ahead
-from geometry_msgs.msg import PoseStamped, Twist
-from nav_msgs.msg import Path
-from sensor_msgs.msg import LaserScan
-from std_msgs.msg import Bool
+# This script has its package's name: keep folders holding an explorer.py (this script,
+# catkin's devel wrapper) off the import path, or `import explorer` finds the script.
+sys.path[:] = [p for p in sys.path if not os.path.isfile(os.path.join(p or ".", "explorer.py"))]
+
+import rospy  # noqa: E402
+import tf2_ros  # noqa: E402
+from explorer.exploration import Explorer, ExplorerParams  # noqa: E402
+from explorer.follower import FollowerParams  # noqa: E402
+from explorer.map_message import MapFormatError, decode_occupancy_grid  # noqa: E402
+from explorer.map_planner import MapPlanner, PlannerParams  # noqa: E402
+from explorer.params import ParamError, non_negative, positive  # noqa: E402
+from explorer.recovery import RecoveryParams  # noqa: E402
+from explorer.scan_safety import clearance_ahead  # noqa: E402
+from geometry_msgs.msg import PoseStamped, Twist  # noqa: E402
+from nav_msgs.msg import Path  # noqa: E402
+from sensor_msgs.msg import LaserScan  # noqa: E402
+from std_msgs.msg import Bool  # noqa: E402
 
 
 def param(name, default, check=positive):

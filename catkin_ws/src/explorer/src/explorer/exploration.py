@@ -78,7 +78,8 @@ class Explorer:
         if not plan.kept or self.state != FOLLOW:
             self.events.append(
                 f"goal ({plan.goal[0]:.2f}, {plan.goal[1]:.2f}): path {plan.cost:.1f} m, "
-                f"frontier {plan.frontier_size:.1f} m, {plan.frontiers_left} frontiers left"
+                f"frontier {plan.frontier_size:.1f} m opening onto {plan.gain:.1f} m^2, "
+                f"{plan.frontiers_left} frontiers left"
             )
             self.goal_started = now
             self.stuck.reset()

@@ -15,6 +15,7 @@ class Frontier:
     label: int  # index into the label image returned with it
     size: int  # cells
     centroid: tuple  # (row, col), float
+    gain: int = 0  # unknown cells it opens onto (see information_gain)
 
 
 def frontier_mask(classes):
@@ -52,12 +53,36 @@ def find_frontiers(classes, min_size=1):
     return cluster(frontier_mask(classes), min_size)
 
 
-def approach_labels(labels, reach_cells):
-    """Label every cell within `reach_cells` of a frontier cell with its nearest cluster's
-    label (0 elsewhere): the robot observes a frontier from near it, not only on it."""
-    if not labels.any():
-        return np.zeros_like(labels)
-    distance, (rows, cols) = ndimage.distance_transform_edt(labels == 0, return_indices=True)
-    near = labels[rows, cols]
-    near[distance > reach_cells] = 0
-    return near
+def spread_labels(labels, through, steps):
+    """Grow each label through the cells of `through` for up to `steps` 8-connected steps
+    (geodesic: cells outside `through` block it). Returns (labels, distance in steps, -1
+    where no label arrived); where labels meet, the larger label wins."""
+    spread = labels.copy()
+    distance = np.where(labels > 0, 0, -1)
+    h, w = labels.shape
+    for k in range(1, int(steps) + 1):
+        # A 3 x 3 maximum by shifted views: several times faster than grey_dilation here.
+        padded = np.pad(spread, 1)
+        grown = spread.copy()
+        for dr in range(3):
+            for dc in range(3):
+                np.maximum(grown, padded[dr : dr + h, dc : dc + w], out=grown)
+        new = (spread == 0) & (grown > 0) & through
+        if not new.any():
+            break
+        spread[new] = grown[new]
+        distance[new] = k
+    return spread, distance
+
+
+def information_gain(classes, labels, frontiers, steps):
+    """Set each frontier's `gain`: the unknown cells within `steps` of it, counted through
+    unknown space only (known walls bound it), so a doorway onto a room scores more than
+    a sliver of unseen floor behind a desk."""
+    if not frontiers:
+        return
+    spread, _ = spread_labels(labels, classes == UNKNOWN, steps)
+    index = [f.label for f in frontiers]
+    counts = ndimage.sum_labels(classes == UNKNOWN, spread, index)
+    for frontier, count in zip(frontiers, counts, strict=True):
+        frontier.gain = int(count)

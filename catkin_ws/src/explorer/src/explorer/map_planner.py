@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .costmap import inflate
-from .frontiers import find_frontiers
+from .frontiers import find_frontiers, information_gain
 from .grid import FREE, GridGeometry, classify, downsample, known_window
 from .planner import choose_goal, distance_field, extract_path
 
@@ -19,10 +19,12 @@ class PlannerParams:
     inflation_radius: float = 0.30  # m: cost falls to zero this far from obstacles
     cost_scale: float = 3.0  # extra cost per metre at the lethal radius
     min_frontier_size: float = 0.3  # m: smaller frontiers are ignored
-    reach_min: float = 0.4  # m: observe a frontier from at least this far (sensor minimum)
+    reach_min: float = 0.6  # m: observe a frontier from at least this far (sensor minimum)
     reach_max: float = 1.2  # m: and at most this far (through free space)
-    info_weight: float = 0.3  # score bonus per metre of frontier
-    info_cap: float = 4.0  # m: frontier length beyond this earns no more bonus
+    info_radius: float = 1.5  # m: unknown space this deep behind a frontier counts as gain
+    min_gain: float = 0.2  # m^2: frontiers opening onto less unknown space are ignored
+    info_weight: float = 0.5  # score bonus (m of path) per m^2 of gain
+    info_cap: float = 8.0  # m^2: gain beyond this earns no more bonus
     switch_margin: float = 1.0  # m: keep the current goal unless another scores this much better
     blacklist_radius: float = 0.5  # m
     free_threshold: int = 25
@@ -36,6 +38,7 @@ class Plan:
     look_yaw: float  # heading that faces the frontier from the goal
     cost: float  # path cost, m
     frontier_size: float  # m
+    gain: float  # m^2 of unknown space behind the frontier
     frontiers_left: int
     kept: bool = False  # the previous goal was kept
 
@@ -74,6 +77,12 @@ class MapPlanner:
         )
         min_cells = max(1, int(math.ceil(p.min_frontier_size / geometry.resolution)))
         labels, frontiers = find_frontiers(coarse, min_cells)
+        cell_area = geometry.resolution**2
+        information_gain(coarse, labels, frontiers, int(round(p.info_radius / geometry.resolution)))
+        dropped = [f.label for f in frontiers if f.gain * cell_area < p.min_gain]
+        if dropped:
+            labels[np.isin(labels, dropped)] = 0
+            frontiers = [f for f in frontiers if f.label not in dropped]
         self.prepared = PreparedMap(geometry, coarse, costmap, labels, frontiers)
         return True
 
@@ -132,18 +141,29 @@ class MapPlanner:
         path = np.column_stack([xs, ys])
         path = np.vstack([[x, y], path])
         gx, gy = g.to_world(*best.cell)
-        frontier = next(f for f in prep.frontiers if f.label == best.label)
-        fx, fy = g.to_world(*frontier.centroid)
-        look = math.atan2(fy - gy, fx - gx) if math.hypot(fx - gx, fy - gy) > 1e-6 else 0.0
+        look = self._look_yaw(best, gx, gy)
         return Plan(
             (float(gx), float(gy)),
             path,
             look,
             best.cost,
             best.size * g.resolution,
+            best.gain,
             len(prep.frontiers),
             kept,
         )
+
+    def _look_yaw(self, choice, gx, gy):
+        """Heading from the goal to the part of its frontier within view (3 m)."""
+        prep = self.prepared
+        g = prep.geometry
+        rows, cols = np.nonzero(prep.labels == choice.label)
+        xs, ys = g.to_world(rows, cols)
+        near = np.hypot(xs - gx, ys - gy) <= 3.0
+        if near.any():
+            xs, ys = xs[near], ys[near]
+        dx, dy = float(xs.mean() - gx), float(ys.mean() - gy)
+        return math.atan2(dy, dx) if math.hypot(dx, dy) > 1e-6 else 0.0
 
     def _goal_score(self, dist, goal, excluded, **kwargs):
         """The current goal re-scored on the new map, if it still observes a frontier."""

@@ -9,6 +9,7 @@ from scipy import ndimage
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import dijkstra
 
+from .frontiers import spread_labels
 from .grid import FREE
 
 # Half of the 8-neighbourhood (the graph is undirected): (drow, dcol).
@@ -113,23 +114,6 @@ def extract_path(field, goal):
     return field.cells[np.array(nodes[::-1])]
 
 
-def approach_regions(labels, free_mask, reach_cells):
-    """Spread each frontier's label through known free space for up to `reach_cells` steps
-    (8-connected, geodesic: walls block it). Returns (labels, steps): the label of the
-    frontier each cell can observe and how many steps away it is (-1: none)."""
-    spread = labels.copy()
-    steps = np.where(labels > 0, 0, -1)
-    footprint = np.ones((3, 3), dtype=bool)
-    for k in range(1, reach_cells + 1):
-        grown = ndimage.grey_dilation(spread, footprint=footprint)
-        new = (spread == 0) & (grown > 0) & free_mask
-        if not new.any():
-            break
-        spread[new] = grown[new]
-        steps[new] = k
-    return spread, steps
-
-
 @dataclass
 class GoalChoice:
     label: int
@@ -137,6 +121,7 @@ class GoalChoice:
     cost: float  # path cost, metres
     score: float
     size: int  # frontier cells
+    gain: float  # m^2 of unknown space the frontier opens onto
 
 
 def choose_goal(
@@ -146,28 +131,30 @@ def choose_goal(
     frontiers,
     resolution,
     reach=(0.4, 1.2),
-    info_weight=0.3,
-    info_cap=4.0,
+    info_weight=0.5,
+    info_cap=8.0,
     excluded=None,
 ):
-    """Pick the frontier with the best score = path cost - info_weight * min(frontier
-    length, info_cap) (metres), and the cheapest reachable cell that observes it from a
-    distance within `reach`. `excluded` masks cells that must not be goals (blacklist).
-    Returns None when no frontier is reachable."""
+    """Pick the frontier with the best score = path cost - info_weight * min(gain,
+    info_cap) (metres and square metres of unknown space behind it), and the cheapest
+    reachable cell that observes it from a geodesic distance within `reach` (metres).
+    `excluded` masks cells that must not be goals (blacklist). None if none is reachable."""
     if not frontiers:
         return None
     min_steps = int(round(reach[0] / resolution))
     max_steps = max(1, int(round(reach[1] / resolution)))
-    near, steps = approach_regions(labels, classes == FREE, max_steps)
+    near, steps = spread_labels(labels, classes == FREE, max_steps)
     candidate = (near > 0) & np.isfinite(field.distance) & (steps >= min_steps)
     if excluded is not None:
         candidate &= ~excluded
     near = np.where(candidate, near, 0)
     if not near.any():
         return None
-    sizes = {f.label: f.size for f in frontiers}
+    by_label = {f.label: f for f in frontiers}
     # Only labels with candidates: scipy reports 0 at (0, 0) for an absent label.
-    index = np.unique(near[near > 0])
+    index = np.array([label for label in np.unique(near[near > 0]) if label in by_label])
+    if index.size == 0:
+        return None
     masked = np.where(candidate, field.distance, np.inf)
     costs = ndimage.minimum(masked, near, index)
     positions = ndimage.minimum_position(masked, near, index)
@@ -175,10 +162,10 @@ def choose_goal(
     for label, cost, pos in zip(index, costs, positions, strict=True):
         if not np.isfinite(cost):
             continue
-        length = sizes[label] * resolution
-        score = cost - info_weight * min(length, info_cap)
+        frontier = by_label[label]
+        gain = frontier.gain * resolution**2
+        score = cost - info_weight * min(gain, info_cap)
         if best is None or score < best.score:
-            best = GoalChoice(
-                int(label), (int(pos[0]), int(pos[1])), float(cost), score, sizes[label]
-            )
+            cell = (int(pos[0]), int(pos[1]))
+            best = GoalChoice(int(label), cell, float(cost), score, frontier.size, gain)
     return best

@@ -1,0 +1,129 @@
+"""End to end: the explorer maps the simulator's office world, SLAM in the loop, faster
+than real time. Figures (coverage over sim time, contact, real-time factor) are printed."""
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+from kinematic_sim import WORLDS  # noqa: E402
+
+SPEED = float(os.environ.get("EXPLORER_SIM_SPEED", "8"))
+SIM_SECONDS = float(os.environ.get("EXPLORER_SIM_SECONDS", "400"))
+PYTHON = "/usr/bin/python3"
+
+
+def world_start(world):
+    for line in (WORLDS / f"{world}.yaml").read_text().splitlines():
+        if line.startswith("start:"):
+            return [float(v) for v in line.split(":", 1)[1].strip(" []").split(",")]
+    return [0.0, 0.0, 0.0]
+
+
+def slam_node_available():
+    """gmapping_lite's slam_gmapping built in the sourced workspace?"""
+    done = subprocess.run(["rospack", "find", "gmapping_lite"], capture_output=True, text=True)
+    if done.returncode != 0:
+        return False
+    for prefix in os.environ.get("CMAKE_PREFIX_PATH", "").split(":"):
+        if prefix and (Path(prefix) / "lib" / "gmapping_lite" / "slam_gmapping").exists():
+            return True
+    return False
+
+
+def records(path):
+    if not path.exists():
+        return []
+    return [json.loads(line) for line in path.read_text().splitlines() if line.strip()]
+
+
+def run_exploration(ros, tmp_path, world="office", use_slam=True):
+    """Start everything paused, then run SIM_SECONDS of sim time; return the records."""
+    if (
+        shutil.which("rospack") is None
+        or subprocess.run(["rospack", "find", "bullet_turtlebot"], capture_output=True).returncode
+    ):
+        pytest.skip("bullet_turtlebot is not in this workspace")
+    truth = tmp_path / "truth"
+    ros.run(["rosrun", "bullet_turtlebot", "world_to_map", world, "-f", str(truth)])
+    common = [f"world:={world}", f"speed:={SPEED}", "seed:=1", "start_paused:=true"]
+    if use_slam:
+        ros.start(["roslaunch", "explorer", "explore_sim.launch", *common], name="explore_sim")
+    else:
+        # Stand-in for SLAM: perfect odometry, identity map -> odom, a scan-to-grid mapper.
+        ros.start(
+            ["roslaunch", "bullet_turtlebot", "simulator.launch", "odom_noise:=false", *common],
+            name="sim",
+        )
+        ros.start([PYTHON, str(HERE / "stand_in_mapper.py")], name="stand_in_mapper")
+        ros.start(["roslaunch", "explorer", "explore.launch"], name="explorer")
+    ros.wait_for_service("simulator/unpause", timeout=90)
+    ros.wait_for_topic("explorer/done", timeout=60)
+    out = tmp_path / "coverage.jsonl"
+    start = world_start(world)
+    ros.start(
+        [
+            PYTHON,
+            str(HERE / "coverage_recorder.py"),
+            "--truth",
+            f"{truth}.yaml",
+            "--start",
+            *map(str, start),
+            "--out",
+            str(out),
+            "--period",
+            "10",
+        ],
+        name="coverage_recorder",
+    )
+    ros.wait_for(lambda: records(out), 60, "the coverage recorder")
+    ros.run(["rosservice", "call", "/simulator/unpause"])
+    deadline = time.monotonic() + SIM_SECONDS / SPEED * 6 + 120
+    while time.monotonic() < deadline:
+        got = records(out)
+        if got and (got[-1]["sim"] - got[0]["sim"] >= SIM_SECONDS or got[-1]["done"]):
+            return got
+        for proc in ros.procs:
+            assert proc.poll() is None, f"{proc.label} died:\n" + ros.output(proc)[-3000:]
+        time.sleep(1.0)
+    raise AssertionError(f"{SIM_SECONDS} s of sim time did not pass: {records(out)[-1:]}")
+
+
+def report(got, label):
+    t0, w0 = got[0]["sim"], got[0]["wall"]
+    last = got[-1]
+    elapsed = last["sim"] - t0
+    lines = [f"{label}: coverage over sim time (speed {SPEED})"]
+    for r in got:
+        if round(r["sim"] - t0) % 50 == 0:
+            lines.append(f"  {r['sim'] - t0:5.0f} s  {r['coverage']:6.1%}")
+    lines.append(
+        f"  final {last['coverage']:.1%} at {elapsed:.0f} s sim, contact "
+        f"{last['contact'] / max(elapsed, 1e-9):.1%}, done {last['done']}, real-time factor "
+        f"{elapsed / (last['wall'] - w0):.1f}"
+    )
+    print("\n".join(lines))
+    return last, elapsed
+
+
+def test_explorer_maps_the_office_with_slam(ros, tmp_path):
+    if not slam_node_available():
+        pytest.skip("gmapping_lite's slam_gmapping is not built in this workspace")
+    got = run_exploration(ros, tmp_path, use_slam=True)
+    last, elapsed = report(got, "office, gmapping_lite")
+    assert last["coverage"] >= 0.80
+    assert last["contact"] / elapsed < 0.05
+
+
+def test_explorer_maps_the_office_with_perfect_odometry(ros, tmp_path):
+    got = run_exploration(ros, tmp_path, use_slam=False)
+    last, elapsed = report(got, "office, perfect odometry")
+    assert last["coverage"] >= 0.80
+    assert last["contact"] / elapsed < 0.05
