@@ -41,10 +41,11 @@ def start_fake_robot(ros, *fake_args):
 def measure(rviz, img):
     """Masks and counts of the colour key inside the 3D view."""
     view = rviz.view(img)
+    hsv = rs.hsv(view)
     masks = {
-        "robot": rs.mask_hsv(view, **ROBOT_PLATES),
-        "cloud": rs.mask_hsv(view, **CLOUD),
-        "odom": rs.mask_hsv(view, **ODOM_ARROWS),
+        "robot": rs.mask_hsv(view, **ROBOT_PLATES, hsv_of_img=hsv),
+        "cloud": rs.mask_hsv(view, **CLOUD, hsv_of_img=hsv),
+        "odom": rs.mask_hsv(view, **ODOM_ARROWS, hsv_of_img=hsv),
         "scan": rs.mask_rgb(view, SCAN, tol=40),
         "free": rs.mask_rgb(view, MAP_FREE, tol=3),
         "wall": rs.mask_rgb(view, MAP_WALL, tol=3),

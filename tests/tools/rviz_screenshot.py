@@ -289,9 +289,12 @@ def hsv(img):
     return hue, sat, mx
 
 
-def mask_hsv(img, hue, sat=(0.0, 1.0), val=(0.0, 1.0)):
-    """Pixels whose hue lies in [lo, hi] degrees (wrapping if lo > hi), sat and value in range."""
-    h, s, v = hsv(img)
+def mask_hsv(img, hue, sat=(0.0, 1.0), val=(0.0, 1.0), hsv_of_img=None):
+    """Pixels whose hue lies in [lo, hi] degrees (wrapping if lo > hi), sat and value in range.
+
+    Pass hsv_of_img (from hsv(img)) to reuse it across several masks of one picture.
+    """
+    h, s, v = hsv(img) if hsv_of_img is None else hsv_of_img
     lo, hi = hue
     in_hue = (h >= lo) & (h <= hi) if lo <= hi else (h >= lo) | (h <= hi)
     return in_hue & (s >= sat[0]) & (s <= sat[1]) & (v >= val[0]) & (v <= val[1])
