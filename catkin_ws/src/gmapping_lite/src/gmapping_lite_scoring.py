@@ -134,7 +134,12 @@ def map_accuracy(points, truth, tolerance):
     near = 0
     for x, y in points:
         i, j = int(math.floor((x - ox) / res)), int(math.floor((y - oy) / res))
-        j0, j1, i0, i1 = max(0, j - reach), min(h, j + reach + 1), max(0, i - reach), min(w, i + reach + 1)
+        j0, j1, i0, i1 = (
+            max(0, j - reach),
+            min(h, j + reach + 1),
+            max(0, i - reach),
+            min(w, i + reach + 1),
+        )
         if j0 >= j1 or i0 >= i1:
             continue
         jj, ii = np.nonzero(occupied[j0:j1, i0:i1])

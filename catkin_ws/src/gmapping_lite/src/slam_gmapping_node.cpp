@@ -7,6 +7,7 @@
 #include <ros/ros.h>
 
 #include <atomic>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -314,6 +315,8 @@ class SlamGmappingNode {
 }  // namespace gmapping_lite
 
 int main(int argc, char** argv) {
+  // Diagnostics appear line by line even when stdout is a file or a pipe.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   ros::init(argc, argv, "slam_gmapping");
   gmapping_lite::SlamGmappingNode node;
   // Two threads: the service and the scan callback must not block each other for long.

@@ -1,0 +1,185 @@
+"""slam_gmapping (gmapping_lite) against a synthetic laser robot: the book's interface
+(topics, latched map, dynamic_map, tf, entropy, parameters) and its robustness to odd lasers,
+missing tf and sim time. Every test runs under use_sim_time with the robot as /clock."""
+
+import math
+from pathlib import Path
+
+import pytest
+from roskit import DEBIAN_PYTHON
+
+HERE = Path(__file__).resolve().parent
+ROBOT = [DEBIAN_PYTHON, str(HERE / "synthetic_scans.py")]
+BOOK_BOUNDS = {"xmin": -10, "xmax": 10, "ymin": -10, "ymax": 10}
+
+
+def start_slam(ros, **params):
+    ros.run(["rosparam", "set", "/use_sim_time", "true"])
+    params.setdefault("base_frame", "base_footprint")
+    for name, value in BOOK_BOUNDS.items():  # a 400 x 400 map instead of 4000 x 4000
+        params.setdefault(name, value)
+    for name, value in params.items():
+        ros.run(["rosparam", "set", f"/slam_gmapping/{name}", str(value)])
+    node = ros.start(["rosrun", "gmapping_lite", "slam_gmapping"], name="slam_gmapping")
+    ros.wait_for_topic("map_metadata")
+    return node
+
+
+def drive(ros, *options, timeout=120):
+    robot = ros.start(ROBOT + list(options), name="synthetic_scans")
+    robot.wait(timeout=timeout)
+    assert robot.returncode == 0, ros.output(robot)
+
+
+def seconds(stamp):
+    """A recorded time (the probe records rospy.Time as {secs, nsecs}) in seconds."""
+    return stamp["secs"] + stamp["nsecs"] * 1e-9 if isinstance(stamp, dict) else stamp
+
+
+def cell(grid, x, y):
+    info = grid["info"]
+    i = int(math.floor((x - info["origin"]["position"]["x"]) / info["resolution"]))
+    j = int(math.floor((y - info["origin"]["position"]["y"]) / info["resolution"]))
+    return grid["data"][j * info["width"] + i]
+
+
+def near(grid, x, y, value, reach=0.1):
+    """True if some cell within `reach` of (x, y) holds `value`."""
+    steps = [k * 0.05 for k in range(-int(reach / 0.05), int(reach / 0.05) + 1)]
+    return any(cell(grid, x + dx, y + dy) == value for dx in steps for dy in steps)
+
+
+def assert_room_mapped(grid):
+    """The synthetic room: walls at x = +-4, y = +-3, a box at (1.5..2.1, 1.0..1.6)."""
+    for y in (-2.0, -1.0, 0.5, 2.0):
+        assert near(grid, -4.0, y, 100), f"west wall missing at y={y}"
+    for x in (-3.0, -1.0, 1.0, 3.0):
+        assert near(grid, x, 3.0, 100), f"north wall missing at x={x}"
+        assert near(grid, x, -3.0, 100), f"south wall missing at x={x}"
+    assert near(grid, 1.5, 1.3, 100), "box missing"
+    for x, y in ((0.5, 0.0), (-2.0, -1.5), (-2.5, 2.0), (3.0, -2.0)):
+        assert cell(grid, x, y) == 0, f"({x}, {y}) should be free"
+
+
+def test_book_parameters_map_latched_stamped_and_served(ros):
+    start_slam(ros, linearUpdate=0.1, angularUpdate=0.1, lskip=10, map_update_interval=1.0)
+    entropy = ros.probe(["/slam_gmapping/entropy"], count=3, ready=False)
+    drive(ros)
+    # A subscriber arriving after the fact still gets the map: it is latched.
+    grid = ros.echo("map")[0]["msg"]
+    info = grid["info"]
+    assert grid["header"]["frame_id"] == "map"
+    assert 100.0 < seconds(grid["header"]["stamp"]) <= 141.0  # a scan's time, never 0
+    assert info["resolution"] == pytest.approx(0.05)
+    assert (info["origin"]["position"]["x"], info["origin"]["position"]["y"]) == (-10.0, -10.0)
+    assert info["origin"]["orientation"]["w"] == 1.0
+    assert (info["width"], info["height"]) == (400, 400)
+    assert set(grid["data"]) <= {-1, 0, 100}
+    assert_room_mapped(grid)
+    meta = ros.echo("map_metadata")[0]["msg"]
+    assert (meta["width"], meta["height"]) == (400, 400)
+    # dynamic_map answers with the same map.
+    served = ros.run(["rosservice", "call", "/dynamic_map"]).stdout
+    assert "width: 400" in served and 'frame_id: "map"' in served
+    # The filter's weight entropy is published: at most log(30).
+    values = [m["msg"]["data"] for m in entropy.wait(30)]
+    assert values and all(0.0 <= v <= math.log(30) + 1e-9 for v in values)
+
+
+def test_map_to_odom_tf_is_stamped_ahead_of_the_scans(ros):
+    start_slam(ros)
+    tf = ros.probe(["/tf"], duration=12, ready=False, timeout=40)
+    drive(ros, "--duration", "12", "--speed", "2")
+    stamps = [
+        seconds(t["header"]["stamp"])
+        for m in tf.wait(40)
+        for t in m["msg"]["transforms"]
+        if t["header"]["frame_id"] == "map" and t["child_frame_id"] == "odom"
+    ]
+    assert len(stamps) > 10, "map -> odom was not published"
+    assert min(stamps) > 100.0  # never time 0
+    assert max(stamps) <= 112.0 + 0.05 + 1e-6  # latest scan + transform_publish_period
+
+
+def test_diagnostics_and_update_thresholds_follow_the_parameters(ros):
+    node = start_slam(ros, linearUpdate=1.0, angularUpdate=0.5)
+    drive(ros)
+    ros.stop(node)
+    coarse = ros.output(node).count("] [/slam_gmapping]: slam_gmapping: update ")
+    node = start_slam(ros, linearUpdate=0.1, angularUpdate=0.1)
+    drive(ros)
+    ros.stop(node)
+    log = ros.output(node)
+    fine = log.count("slam_gmapping: update ")
+    # One turn (2 pi) and 4 m of driving: about 12 + 4 updates vs 63 + 40.
+    assert 10 <= coarse <= 25, coarse
+    assert fine >= 80, fine
+    assert "best pose (" in log and "Neff" in log
+
+
+def test_inf_beams_clear_free_space_up_to_max_urange(ros):
+    start_slam(ros, maxUrange=6.0, map_update_interval=1.0)
+    drive(ros, "--open-wall")
+    grid = ros.echo("map")[0]["msg"]
+    # Beyond the missing east wall nothing reflects: free out to maxUrange, then unknown.
+    assert cell(grid, 4.5, 0.0) == 0
+    assert cell(grid, 5.5, 0.0) == 0
+    assert cell(grid, 9.0, 0.0) == -1  # beyond the last pose (x = 2) + maxUrange
+    assert not near(grid, 4.0, 0.0, 100)
+
+
+def test_upside_down_laser_maps_the_room_the_right_way_round(ros):
+    node = start_slam(ros, map_update_interval=1.0)
+    drive(ros, "--roll", str(math.pi))
+    assert_room_mapped(ros.echo("map")[0]["msg"])
+    assert "upside down" in ros.output(node)
+
+
+def test_asymmetric_scan_maps_the_room(ros):
+    start_slam(ros, map_update_interval=1.0)
+    drive(ros, "--angle-min", "-0.6", "--angle-max", "2.4")
+    assert_room_mapped(ros.echo("map")[0]["msg"])
+
+
+def test_slightly_tilted_laser_is_handled_a_steep_one_is_refused(ros):
+    start_slam(ros, map_update_interval=1.0)
+    drive(ros, "--pitch", "0.05")
+    assert_room_mapped(ros.echo("map")[0]["msg"])
+    ros.run(["rosnode", "kill", "/slam_gmapping"])
+    node = start_slam(ros)
+    drive(ros, "--pitch", "0.4", "--duration", "4")
+    assert "scan plane is tilted 22.9" in ros.output(node)
+
+
+def test_changed_beam_count_is_logged_once_and_handled(ros):
+    node = start_slam(ros, map_update_interval=1.0)
+    drive(ros, "--beams-after", "240")
+    log = ros.output(node)
+    assert log.count("changed from 360 to 240 beams") == 1, log[-3000:]
+    assert_room_mapped(ros.echo("map")[0]["msg"])
+
+
+def test_missing_odometry_tf_is_named_and_throttled(ros):
+    node = start_slam(ros)
+    drive(ros, "--no-odom", "--duration", "20", "--speed", "2")
+    log = ros.output(node)
+    named = [line for line in log.splitlines() if "no odometry: transform from 'odom'" in line]
+    assert named, log[-3000:]
+    assert "to 'base_footprint' at the scan's stamp 1" in named[0]
+    assert len(named) <= 4  # 200 scans dropped, a few throttled warnings
+    assert "MessageFilter" not in log
+
+
+def test_bag_played_with_clock(ros, tmp_path):
+    bag = tmp_path / "data.bag"
+    recorder = ros.start(["rosbag", "record", "-O", str(bag), "/scan", "/tf", "/tf_static"])
+    ros.wait_for(
+        lambda: "/record" in ros.run(["rosnode", "list"], check=False).stdout, 10, "rosbag record"
+    )
+    drive(ros, "--duration", "40", "--speed", "4")
+    ros.stop(recorder)
+    assert bag.exists()
+    node = start_slam(ros, map_update_interval=1.0)
+    ros.run(["rosbag", "play", "--clock", "-r", "4", str(bag)], timeout=60)
+    assert_room_mapped(ros.echo("map")[0]["msg"])
+    assert "update 5" in ros.output(node)
