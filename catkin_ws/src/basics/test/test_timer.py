@@ -37,7 +37,7 @@ def test_five_second_goal_sends_five_updates_and_ends_on_time():
     outcome, elapsed, updates = clock.run(5.0)
     assert (outcome, updates) == ("succeeded", 5)
     assert elapsed == pytest.approx(5.0, abs=0.011)
-    assert [e for e, _ in clock.feedback] == pytest.approx([0, 1.05, 2.05, 3.05, 4.05], abs=0.011)
+    assert [e for e, _ in clock.feedback] == pytest.approx([0, 1.1, 2.1, 3.1, 4.1], abs=0.011)
     assert all(e + r == pytest.approx(5.0) for e, r in clock.feedback)
 
 

@@ -12,7 +12,7 @@ FEEDBACK_PERIOD = 1.0  # seconds between feedback messages
 # Feedback after the first goes out this late, so that a cancel the client sends at exactly
 # k seconds (the book cancels after 3 s) lands before feedback k despite network and
 # scheduling jitter, as in the book's run (3 updates, not 4).
-TICK_LAG = 0.05
+TICK_LAG = 0.1
 # A ROS duration travels as int32 seconds; larger values cannot be serialised.
 MAX_SENDABLE = 2**31 - 1
 
