@@ -29,10 +29,11 @@ def phases(messages):
 
 
 def test_wander_drives_past_nan_and_inf_and_spins_5_s_at_an_obstacle(ros):
-    ros.start(FAKE_SCAN + ["clear@0", "near@3", "clear@4", "allnan@12", "clear@18"])
+    # The scan timeline starts once wander is running and recorded (wander waits for a scan).
     ros.start(["rosrun", "wanderbot", "wander.py"], name="wander")
     ros.wait_for_topic("cmd_vel")
-    probe = ros.probe(["cmd_vel"], duration=22)
+    probe = ros.probe(["cmd_vel"], duration=26)
+    ros.start(FAKE_SCAN + ["clear@0", "near@3", "clear@4", "allnan@12", "clear@18"])
     messages = probe.wait(40)
     seen = phases(messages)
     states = [s for s, _, _ in seen]
@@ -48,10 +49,11 @@ def test_wander_drives_past_nan_and_inf_and_spins_5_s_at_an_obstacle(ros):
 
 
 def test_wander_treats_minus_inf_as_an_obstacle(ros):
-    ros.start(FAKE_SCAN + ["far@0", "minus@8"])
     ros.start(["rosrun", "wanderbot", "wander.py", "_forward_speed:=0.25"], name="wander")
     ros.wait_for_topic("cmd_vel")
-    seen = phases(ros.probe(["cmd_vel"], duration=12).wait(40))
+    probe = ros.probe(["cmd_vel"], duration=10)
+    ros.start(FAKE_SCAN + ["far@0", "minus@3"])
+    seen = phases(probe.wait(40))
     assert [s for s, _, _ in seen][:2] == ["drive", "spin"], seen
 
 
