@@ -30,7 +30,6 @@ import numpy as np
 from PIL import Image
 
 SCREEN = (1280, 800)
-BACKGROUND = (48, 48, 48)  # rviz's default 3D background
 
 
 class RvizError(RuntimeError):
@@ -43,6 +42,8 @@ class RvizSession:
     def __init__(self, config=None, env=None, workdir=None, screen=SCREEN, command=None):
         """rviz -d `config`, or any `command` that opens rviz (e.g. a roslaunch)."""
         if command is None:
+            if config is None:
+                raise ValueError("RvizSession needs an rviz config or a command")
             config = Path(config).resolve()
             if not config.is_file():
                 raise FileNotFoundError(f"rviz config not found: {config}")
@@ -91,7 +92,7 @@ class RvizSession:
             "xvfb-run",
             "-a",
             "-s",
-            f"-screen 0 {width}x{height}x24 -nolisten tcp",
+            f"-screen 0 {width}x{height}x24",
             "sh",
             "-c",
             inner,
@@ -318,10 +319,6 @@ def extent(mask):
     if len(xs) == 0:
         return 0, 0
     return int(xs.max() - xs.min() + 1), int(ys.max() - ys.min() + 1)
-
-
-def fraction_rgb(img, rgb, tol=12):
-    return count_rgb(img, rgb, tol) / float(img.shape[0] * img.shape[1])
 
 
 def is_blank(img, tol=6):
