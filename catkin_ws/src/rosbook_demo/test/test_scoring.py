@@ -16,14 +16,14 @@ def test_wall_hits_counts_points_near_true_walls():
     cells, res, origin = room()
     near = np.array([[-1.95, 0.0], [-1.90, 0.5]])  # on and 5 cm from the west wall
     far = np.array([[0.0, 0.0]])
-    assert wall_hits(near, cells, res, origin, 0.10) == 1.0
-    assert wall_hits(np.vstack((near, far)), cells, res, origin, 0.10) == pytest.approx(2 / 3)
-    assert math.isnan(wall_hits(np.zeros((0, 2)), cells, res, origin, 0.10))
+    assert wall_hits(near, (cells, res, origin), 0.10) == 1.0
+    assert wall_hits(np.vstack((near, far)), (cells, res, origin), 0.10) == pytest.approx(2 / 3)
+    assert math.isnan(wall_hits(np.zeros((0, 2)), (cells, res, origin), 0.10))
 
 
 def test_points_outside_the_truth_map_miss():
     cells, res, origin = room()
-    assert wall_hits(np.array([[50.0, 50.0]]), cells, res, origin, 0.10) == 0.0
+    assert wall_hits(np.array([[50.0, 50.0]]), (cells, res, origin), 0.10) == 0.0
 
 
 def test_map_frame_is_where_odometry_started_in_the_world():

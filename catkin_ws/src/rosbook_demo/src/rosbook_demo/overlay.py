@@ -1,11 +1,7 @@
 """Draw a SLAM map over the world's ground truth, with the true, odometry and SLAM paths.
 
-Maps are given as (cells, resolution, origin) with cells a 2-D array in OccupancyGrid order
-(row 0 at the bottom, values -1/0/100) and origin the world pose (x, y, yaw) of cell (0, 0)'s
-corner. Everything is drawn in the world frame.
+Maps are grids as in rosbook_demo.grids; everything is drawn in the world frame.
 """
-
-import math
 
 import matplotlib
 
@@ -13,55 +9,41 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-
-def cell_centres(mask, resolution, origin):
-    """World coordinates of the centres of the cells where `mask` is true."""
-    rows, cols = np.nonzero(mask)
-    x = (cols + 0.5) * resolution
-    y = (rows + 0.5) * resolution
-    ox, oy, oth = origin
-    c, s = math.cos(oth), math.sin(oth)
-    return np.column_stack((ox + c * x - s * y, oy + s * x + c * y))
+from rosbook_demo.grids import OCCUPIED, cell_centres, corners, sample  # noqa: E402
 
 
-def occupied_points(cells, resolution, origin, threshold=65):
-    return cell_centres(cells >= threshold, resolution, origin)
-
-
-def free_points(cells, resolution, origin):
-    return cell_centres(cells == 0, resolution, origin)
+def render(truth, slam, margin=0.5):
+    """An RGB picture in the world frame: SLAM free space light blue, true walls grey, SLAM
+    walls black. Returns (image with row 0 at the top, extent for imshow)."""
+    points = corners(truth)
+    if slam is not None and (slam[0] != -1).any():
+        points = np.vstack((points, cell_centres(slam, slam[0] != -1)))
+    x0, y0 = points.min(axis=0) - margin
+    x1, y1 = points.max(axis=0) + margin
+    step = truth[1]
+    xs, ys = np.meshgrid(np.arange(x0, x1, step) + step / 2, np.arange(y1, y0, -step) - step / 2)
+    image = np.full(xs.shape + (3,), 255, dtype=np.uint8)
+    if slam is not None:
+        slam_cells = sample(slam, xs, ys)
+        image[slam_cells == 0] = (214, 228, 245)
+    image[sample(truth, xs, ys) >= OCCUPIED] = (150, 150, 150)
+    if slam is not None:
+        image[slam_cells >= OCCUPIED] = (0, 0, 0)
+    return image, (x0, x0 + xs.shape[1] * step, y1 - ys.shape[0] * step, y1)
 
 
 def draw(path, truth, slam, trajectories, title=""):
     """Write a PNG. truth/slam: (cells, resolution, origin); trajectories: {label: Trajectory}."""
     fig, ax = plt.subplots(figsize=(10, 8), dpi=100)
-    marker = 72.0 / fig.dpi * 0.6
-    if slam is not None:
-        free = free_points(*slam)
-        ax.scatter(
-            free[:, 0],
-            free[:, 1],
-            s=marker,
-            c="#dde8f5",
-            marker="s",
-            linewidths=0,
-            label="SLAM free space",
-        )
-    wall = occupied_points(*truth)
-    ax.scatter(
-        wall[:, 0],
-        wall[:, 1],
-        s=marker * 2,
-        c="#999999",
-        marker="s",
-        linewidths=0,
-        label="true walls",
-    )
-    if slam is not None:
-        occ = occupied_points(*slam)
-        ax.scatter(
-            occ[:, 0], occ[:, 1], s=marker, c="black", marker="s", linewidths=0, label="SLAM walls"
-        )
+    image, extent = render(truth, slam)
+    ax.imshow(image, extent=extent, interpolation="nearest")
+    legend = [
+        ("SLAM free space", (214, 228, 245)),
+        ("true walls", (150, 150, 150)),
+        ("SLAM walls", (0, 0, 0)),
+    ]
+    for label, rgb in legend:
+        ax.plot([], [], "s", color=np.array(rgb) / 255.0, label=label)
     colours = {"ground truth": "tab:green", "odometry": "tab:red", "SLAM": "tab:blue"}
     for label, traj in trajectories.items():
         if len(traj):
@@ -72,7 +54,7 @@ def draw(path, truth, slam, trajectories, title=""):
     ax.set_xlabel("x (m, world)")
     ax.set_ylabel("y (m, world)")
     ax.set_title(title)
-    ax.legend(loc="upper right", fontsize=8, markerscale=6)
+    ax.legend(loc="upper right", fontsize=8)
     fig.tight_layout()
     fig.savefig(path)
     plt.close(fig)

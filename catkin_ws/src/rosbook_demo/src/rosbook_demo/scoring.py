@@ -4,7 +4,7 @@ import math
 
 import numpy as np
 
-from rosbook_demo.overlay import occupied_points
+from rosbook_demo.grids import OCCUPIED, dilate, occupied_points, sample
 from rosbook_demo.trajectory import chain, compose, inverse, position_errors, rms
 
 
@@ -22,35 +22,14 @@ def world_from_map(truth, odom, map_to_odom):
     return compose(world_to_odom, inverse(map_to_odom.at(t0)))
 
 
-def wall_hits(points, truth_cells, resolution, origin, tolerance):
+def wall_hits(points, truth, tolerance):
     """Fraction of `points` (world x, y) within `tolerance` metres of a true wall cell."""
     if not len(points):
         return float("nan")
-    walls = truth_cells >= 65
+    cells, resolution, origin = truth
     reach = int(math.ceil(tolerance / resolution))
-    offsets = [
-        (dr, dc)
-        for dr in range(-reach, reach + 1)
-        for dc in range(-reach, reach + 1)
-        if math.hypot(dr, dc) * resolution <= tolerance + 0.5 * resolution
-    ]
-    near = np.zeros_like(walls)
-    rows, cols = walls.shape
-    for dr, dc in offsets:
-        shifted = np.zeros_like(walls)
-        shifted[max(dr, 0) : rows + min(dr, 0), max(dc, 0) : cols + min(dc, 0)] = walls[
-            max(-dr, 0) : rows + min(-dr, 0), max(-dc, 0) : cols + min(-dc, 0)
-        ]
-        near |= shifted
-    ox, oy, oth = origin
-    c, s = math.cos(-oth), math.sin(-oth)
-    dx, dy = points[:, 0] - ox, points[:, 1] - oy
-    col = np.floor((c * dx - s * dy) / resolution).astype(int)
-    row = np.floor((s * dx + c * dy) / resolution).astype(int)
-    inside = (row >= 0) & (row < rows) & (col >= 0) & (col < cols)
-    hits = np.zeros(len(points), dtype=bool)
-    hits[inside] = near[row[inside], col[inside]]
-    return float(hits.mean())
+    near = dilate(cells >= OCCUPIED, reach, resolution, tolerance).astype(np.int8)
+    return float((sample((near, resolution, origin), points[:, 0], points[:, 1]) == 1).mean())
 
 
 def score(truth_traj, odom, map_to_odom, slam_map, truth_map, tolerance=0.10):
@@ -69,9 +48,7 @@ def score(truth_traj, odom, map_to_odom, slam_map, truth_map, tolerance=0.10):
         "odom_final_m": float(odom_err[-1]) if len(odom_err) else float("nan"),
         "slam_rms_m": rms(slam_err),
         "slam_final_m": float(slam_err[-1]) if len(slam_err) else float("nan"),
-        "walls_within_tolerance": wall_hits(
-            occupied_points(*slam_map_world), *truth_map, tolerance
-        ),
+        "walls_within_tolerance": wall_hits(occupied_points(slam_map_world), truth_map, tolerance),
         "tolerance_m": tolerance,
     }
     return figures, {"odometry": odom_in_world, "SLAM": slam_in_world}, slam_map_world
