@@ -150,3 +150,17 @@ def test_bad_arguments_and_unwritable_target(ros, tmp_path):
     done = run_saver(ros, ["-f", str(tmp_path / "missing_dir" / "map")], cwd=tmp_path)
     assert done.returncode == 1
     assert "could not save the map" in done.stderr and "missing_dir" in done.stderr
+
+
+def test_service_only_timeout_explains(ros, tmp_path):
+    _, yaml_path = served_map(tmp_path)
+    ros.start(["rosrun", "map_server", "map_server", str(yaml_path)])
+    ros.wait_for_service("/static_map")
+    done = run_saver(ros, ["--service", "--timeout", "1"], cwd=tmp_path)
+    assert done.returncode == 1
+    assert "no map received from the /dynamic_map service" in done.stderr
+    assert "dynamic_map:=static_map" in done.stderr
+    # The hint works: the same command with the remapping saves map_server's map.
+    done = run_saver(ros, ["--service", "dynamic_map:=static_map"], cwd=tmp_path)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert (tmp_path / "map.yaml").exists()
