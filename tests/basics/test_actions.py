@@ -1,0 +1,105 @@
+"""Chapter 5, actions: the timer with the simple and the fancy server and client."""
+
+import re
+import subprocess
+import time
+
+import pytest
+from roskit import free_port, ros_environment
+
+FEEDBACK = re.compile(
+    r"^\[Feedback\] Time elapsed: (\S+)\n\[Feedback\] Time remaining: (\S+)$", re.M
+)
+RESULT = re.compile(
+    r"^\[Result\] State: (\d+)\n\[Result\] Status: (.*)\n"
+    r"\[Result\] Time elapsed: (\S+)\n\[Result\] Updates sent: (\d+)$",
+    re.M,
+)
+
+
+def fancy_client(ros, *args):
+    """Run fancy_action_client.py; return (feedback [(elapsed, remaining)], result tuple)."""
+    out = ros.run(["rosrun", "basics", "fancy_action_client.py", *args], timeout=60).stdout
+    feedback = [(float(e), float(r)) for e, r in FEEDBACK.findall(out)]
+    (state, status, elapsed, updates), *_ = RESULT.findall(out)
+    return feedback, (int(state), status, float(elapsed), int(updates))
+
+
+@pytest.fixture
+def fancy(ros):
+    ros.start(["rosrun", "basics", "fancy_action_server.py"])
+    ros.wait_for_topic("timer/result")
+    return ros
+
+
+def test_five_second_goal_succeeds_with_five_feedbacks(fancy):
+    feedback, (state, status, elapsed, updates) = fancy_client(fancy)
+    assert (state, status, updates) == (3, "Timer completed successfully", 5)
+    assert elapsed == pytest.approx(5.0, abs=0.25)
+    assert len(feedback) == 5
+    for k, (e, r) in enumerate(feedback):
+        assert e == pytest.approx(k, abs=0.3)  # once a second
+        assert e + r == pytest.approx(5.0, abs=1e-3)
+
+
+def test_cancel_after_three_seconds_preempts(fancy):
+    feedback, (state, status, elapsed, updates) = fancy_client(fancy, "--preempt-after", "3")
+    assert (state, status) == (2, "Timer preempted")
+    assert elapsed == pytest.approx(3.0, abs=0.25)
+    assert updates == 3 and len(feedback) == 3
+
+
+def test_too_long_and_negative_goals_abort_at_once(fancy):
+    started = time.monotonic()
+    feedback, (state, status, elapsed, updates) = fancy_client(fancy, "--duration", "500")
+    assert (state, status, updates, feedback) == (4, "Timer aborted due to too-long wait", 0, [])
+    assert elapsed < 0.5
+    assert time.monotonic() - started < 30  # not 500 s
+
+    feedback, (state, status, _, updates) = fancy_client(fancy, "--duration", "-2")
+    assert (state, updates, feedback) == (4, 0, [])
+    assert status == "Timer aborted due to negative wait (-2.000000 s)"
+
+
+def test_simple_client_waits_for_the_server_then_gets_five_seconds(ros):
+    client = ros.start(["rosrun", "basics", "simple_action_client.py"])
+    ros.wait_for(
+        lambda: "waiting for the action server /timer" in ros.output(client),
+        what="the client to wait",
+    )
+    assert client.poll() is None
+    ros.start(["rosrun", "basics", "simple_action_server.py"])
+    assert client.wait(timeout=60) == 0
+    elapsed = float(re.search(r"^Time elapsed: (\S+)$", ros.output(client), re.M).group(1))
+    assert 5.0 <= elapsed < 5.25
+
+
+def test_simple_server_aborts_a_negative_goal(ros):
+    ros.start(["rosrun", "basics", "simple_action_server.py"])
+    ros.wait_for_topic("timer/result")
+    feedback, (state, status, _, updates) = fancy_client(ros, "--duration", "-1")
+    assert (state, updates, feedback) == (4, 0, [])
+    assert status.startswith("Timer aborted due to negative wait")
+
+
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["--duration", "abc"], "argument --duration: not a number of seconds: 'abc'"),
+        (["--duration", "nan"], "argument --duration: seconds must be finite"),
+        (["--duration", "1e12"], "argument --duration: seconds must be finite"),
+        (["--preempt-after", "-1"], "argument --preempt-after: a delay cannot be negative"),
+        (["--preempt-after", "soon"], "argument --preempt-after: not a number of seconds"),
+    ],
+)
+def test_bad_client_arguments_are_usage_errors(args, message):
+    done = subprocess.run(
+        ["rosrun", "basics", "fancy_action_client.py", *args],
+        capture_output=True,
+        text=True,
+        env=ros_environment(free_port()),  # no master: the client fails before init_node
+        timeout=60,
+    )
+    assert done.returncode == 2
+    assert "usage: fancy_action_client.py" in done.stderr
+    assert message in done.stderr
