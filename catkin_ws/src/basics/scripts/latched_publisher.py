@@ -15,7 +15,7 @@ from std_msgs.msg import String
 def main():
     rospy.init_node("latched_publisher")
     count = rospy.get_param("~count", 1)
-    if not isinstance(count, int) or count < 1:
+    if isinstance(count, bool) or not isinstance(count, int) or count < 1:
         rospy.logfatal("~count must be a positive integer, got %r", count)
         raise SystemExit(2)
     # The book writes latched=True; rospy's keyword is latch.
