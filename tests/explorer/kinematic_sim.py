@@ -177,7 +177,7 @@ def explore(
     clearance_grid = world.clearance()
     travelled, collisions = 0.0, 0
     next_map = next_scan = 0.0
-    map_is_new = False
+    map_stamp = None
     ahead = math.inf
     coverage_at = {}
     now = 0.0
@@ -190,12 +190,17 @@ def explore(
             next_scan += scan_period
         if now >= next_map:
             planner.set_map(mapper.occupancy(), world.resolution, world.origin_x, world.origin_y)
-            map_is_new = True
+            map_stamp = now
             next_map += map_period
-        if explorer.wants_plan(now, map_is_new):
-            map_is_new = False
-            plan = planner.plan(x, y, explorer.excluded_points(now), explorer.current_goal)
-            explorer.accept_plan(plan, now)
+        if explorer.wants_plan(now, map_stamp):
+            plan = planner.plan(
+                x,
+                y,
+                explorer.excluded_points(now),
+                explorer.current_goal,
+                explorer.pending_views(map_stamp),
+            )
+            explorer.accept_plan(plan, now, map_stamp)
         linear, angular = explorer.control(now, x, y, yaw, ahead)
         nx = x + linear * math.cos(yaw) * dt
         ny = y + linear * math.sin(yaw) * dt

@@ -82,7 +82,7 @@ class ExplorerNode:
         self.lock = threading.Lock()
         self.wake = threading.Event()
         self.raw_map = None
-        self.map_is_new = False
+        self.prepared_stamp = None  # stamp of the map the planner holds
         self.clearance = None  # (ros time, metres ahead)
         self.sensor_offsets = {}
         self.pose = None
@@ -118,7 +118,6 @@ class ExplorerNode:
             )
         with self.lock:
             self.raw_map = raw
-            self.map_is_new = True
         self.wake.set()
 
     def scan_callback(self, msg):
@@ -183,7 +182,7 @@ class ExplorerNode:
                 twist.linear.x, twist.angular.z = self.explorer.control(now, *pose, ahead)
                 events = self.explorer.events
                 self.explorer.events = []
-                wants = self.explorer.wants_plan(now, self.map_is_new)
+                wants = self.explorer.wants_plan(now, self.map_stamp())
             self.report(events, now)
             if wants:
                 self.wake.set()
@@ -214,28 +213,31 @@ class ExplorerNode:
             self.done_pub.publish(Bool(data=done))
 
     # -- planning thread ------------------------------------------------------------
+    def map_stamp(self):
+        return self.raw_map.stamp if self.raw_map is not None else None
+
     def planning_loop(self):
         while not rospy.is_shutdown():
             self.wake.wait(0.1)
             self.wake.clear()
             now = rospy.get_time()
             with self.lock:
-                if not self.explorer.wants_plan(now, self.map_is_new) or self.pose is None:
+                stamp = self.map_stamp()
+                if self.pose is None or not self.explorer.wants_plan(now, stamp):
                     continue
-                raw, fresh = self.raw_map, self.map_is_new
-                self.map_is_new = False
+                raw = self.raw_map
                 excluded = self.explorer.excluded_points(now)
                 goal = self.explorer.current_goal
-            if raw is None:
-                continue
+                views = self.explorer.pending_views(stamp)
+                x, y, _ = self.pose
             started = time.monotonic()
-            if fresh:
+            if stamp != self.prepared_stamp:
                 self.planner.set_map(raw.data, raw.resolution, raw.origin[0], raw.origin[1])
-            x, y, _ = self.pose
-            plan = self.planner.plan(x, y, excluded, current_goal=goal)
+                self.prepared_stamp = stamp
+            plan = self.planner.plan(x, y, excluded, current_goal=goal, views=views)
             rospy.logdebug(f"explorer: planned in {time.monotonic() - started:.3f} s wall")
             with self.lock:
-                self.explorer.accept_plan(plan, rospy.get_time())
+                self.explorer.accept_plan(plan, rospy.get_time(), stamp)
             if plan is not None:
                 self.publish_plan(plan)
 
@@ -254,8 +256,9 @@ class ExplorerNode:
         goal = PoseStamped()
         goal.header = path.header
         goal.pose.position.x, goal.pose.position.y = plan.goal
-        goal.pose.orientation.z = math.sin(plan.look_yaw / 2)
-        goal.pose.orientation.w = math.cos(plan.look_yaw / 2)
+        look = plan.look_yaws[len(plan.look_yaws) // 2] if plan.look_yaws else 0.0
+        goal.pose.orientation.z = math.sin(look / 2)
+        goal.pose.orientation.w = math.cos(look / 2)
         self.goal_pub.publish(goal)
 
     def run(self):

@@ -2,8 +2,14 @@
 it, repeat; recover when stuck; stop when no reachable frontier is left.
 
 The owner calls `control()` at a fixed rate with the robot pose and the free distance
-ahead, calls `wants_plan()` to learn when to run the planner, and hands the result (a
-map_planner.Plan or None) to `accept_plan()`. Every time is in seconds of ROS time."""
+ahead, calls `wants_plan()` with the stamp of its latest map to learn when to run the
+planner, and hands the result (a map_planner.Plan or None) to `accept_plan()`. Every time
+is in seconds of ROS time.
+
+SLAM publishes its map every few seconds, so right after looking at a frontier the map
+does not show what was just seen. Rather than wait, the explorer remembers where it
+looked (`pending_views`) and the planner treats the frontier cells seen from there as
+observed until a newer map arrives."""
 
 import math
 from dataclasses import dataclass
@@ -46,6 +52,10 @@ class Explorer:
         self.empty_plans = 0
         self.events = []  # human-readable progress messages for the owner to log
         self.goals_reached = 0
+        self.planned_stamp = -math.inf  # stamp of the map the last plan used
+        self.views = []  # (x, y, yaw, time) where the robot looked at a frontier
+        self.reached = []  # (x, y, time) of reached goals, to catch repeats
+        self.look_queue = []  # headings still to turn through at the goal
 
     # -- planning ----------------------------------------------------------------
     @property
@@ -56,20 +66,39 @@ class Explorer:
     def current_goal(self):
         return self.plan.goal if self.plan is not None and self.state == FOLLOW else None
 
-    def wants_plan(self, now, map_is_new):
-        if self.state in (SPIN, LOOK, RECOVER):
+    def wants_plan(self, now, map_stamp):
+        """Whether to plan now; `map_stamp` is the latest map's stamp (None: no map)."""
+        if map_stamp is None or self.state in (SPIN, LOOK, RECOVER):
             return False
-        if self.state == WAIT or self.plan_requested:
+        map_is_new = map_stamp > self.planned_stamp
+        if self.plan_requested:
+            return True
+        if self.state == WAIT:
+            # SLAM publishes only after the robot moved or turned enough: do not wait
+            # forever for a new map while standing still.
             return map_is_new or now - self.last_plan_time >= self.params.replan_period
         return map_is_new and now - self.last_plan_time >= self.params.replan_period
 
     def excluded_points(self, now):
         return self.blacklist.active(now)
 
-    def accept_plan(self, plan, now):
+    def pending_views(self, map_stamp):
+        """Views (x, y, yaw) taken after the map was made: the map does not show them."""
+        self.views = [v for v in self.views if v[3] > map_stamp]
+        return [v[:3] for v in self.views]
+
+    def accept_plan(self, plan, now, map_stamp):
         self.last_plan_time = now
+        self.planned_stamp = map_stamp
         self.plan_requested = False
         if plan is None:
+            if self.views:
+                # The map is older than our last looks, and what we looked at hides every
+                # frontier left on it. Turn around once: SLAM updates its map when the
+                # robot turns, and the turn may reveal more.
+                self.views = []
+                self._start_spin()
+                return
             self._no_frontier(now)
             return
         self.empty_plans = 0
@@ -113,17 +142,18 @@ class Explorer:
         if self.state == FOLLOW:
             return self._follow(now, x, y, yaw, clearance)
         if self.state == LOOK:
-            angular, finished = turn_towards(yaw, self.plan.look_yaw, self.follower_params)
-            if finished:
-                self.blacklist.add(*self.plan.goal, now)
-                self._request_plan(WAIT)
-            return 0.0, angular
+            return self._look(now, x, y, yaw)
         if self.state == RECOVER:
             linear, angular, finished = self.recovery.command(now)
             if finished:
                 self._request_plan(WAIT)
             return linear, angular
         return 0.0, 0.0
+
+    def _start_spin(self):
+        self.state = SPIN
+        self.spun = 0.0
+        self.last_yaw = None
 
     def _spin(self, yaw):
         if self.last_yaw is not None:
@@ -133,6 +163,30 @@ class Explorer:
             self._request_plan(WAIT)
             return 0.0, 0.0
         return 0.0, self.params.spin_speed
+
+    def _look(self, now, x, y, yaw):
+        """Turn through the queued headings, noting each view; then ask for a plan."""
+        while self.look_queue:
+            angular, finished = turn_towards(yaw, self.look_queue[0], self.follower_params)
+            if not finished:
+                return 0.0, angular
+            self.views.append((x, y, yaw, now))
+            self.look_queue.pop(0)
+        self._request_plan(WAIT)
+        return 0.0, 0.0
+
+    def _arrived(self, now):
+        gx, gy = self.plan.goal
+        self.goals_reached += 1
+        self.events.append(f"reached goal ({gx:.2f}, {gy:.2f})")
+        timeout = self.params.blacklist_timeout
+        self.reached = [r for r in self.reached if now - r[2] < timeout]
+        if any(math.hypot(rx - gx, ry - gy) < self.blacklist.radius for rx, ry, _ in self.reached):
+            # Back where we already looked, and the frontier is still there: it cannot
+            # be seen from here (too low, too close, too far): stop coming back.
+            self.events.append(f"goal ({gx:.2f}, {gy:.2f}) reached twice: blacklisted")
+            self.blacklist.add(gx, gy, now)
+        self.reached.append((gx, gy, now))
 
     def _request_plan(self, state):
         self.state = state
@@ -144,10 +198,13 @@ class Explorer:
         room = max(0.0, clearance - p.stop_distance) * p.slow_gain
         linear, angular, arrived = self.follower.command(x, y, yaw, room)
         if arrived:
-            self.goals_reached += 1
-            self.events.append(f"reached goal ({self.plan.goal[0]:.2f}, {self.plan.goal[1]:.2f})")
+            self._arrived(now)
+            headings = list(self.plan.look_yaws)
+            if headings and abs(wrap(headings[-1] - yaw)) < abs(wrap(headings[0] - yaw)):
+                headings.reverse()  # start the sweep at the nearer end
+            self.look_queue = headings
             self.state = LOOK
-            return 0.0, 0.0
+            return self._look(now, x, y, yaw)
         expected = self.plan.cost / max(self.follower_params.max_linear, 1e-3)
         limit = max(p.goal_timeout_min, p.goal_timeout_factor * expected)
         if now - self.goal_started > limit:

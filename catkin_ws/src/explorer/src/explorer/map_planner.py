@@ -10,6 +10,7 @@ from .costmap import inflate
 from .frontiers import find_frontiers, information_gain
 from .grid import FREE, GridGeometry, classify, downsample, known_window
 from .planner import choose_goal, distance_field, extract_path
+from .visibility import line_of_sight, sweep_headings
 
 
 @dataclass
@@ -20,11 +21,13 @@ class PlannerParams:
     cost_scale: float = 3.0  # extra cost per metre at the lethal radius
     min_frontier_size: float = 0.3  # m: smaller frontiers are ignored
     reach_min: float = 0.6  # m: observe a frontier from at least this far (sensor minimum)
-    reach_max: float = 1.2  # m: and at most this far (through free space)
-    info_radius: float = 1.5  # m: unknown space this deep behind a frontier counts as gain
+    reach_max: float = 2.5  # m: and at most this far, in a straight line through free space
+    info_radius: float = 3.0  # m: unknown space this deep behind a frontier counts as gain
     min_gain: float = 0.2  # m^2: frontiers opening onto less unknown space are ignored
     info_weight: float = 0.5  # score bonus (m of path) per m^2 of gain
-    info_cap: float = 8.0  # m^2: gain beyond this earns no more bonus
+    info_cap: float = 15.0  # m^2: gain beyond this earns no more bonus
+    view_range: float = 4.0  # m: frontier cells this near a view count as seen
+    view_half_angle: float = 0.45  # rad: within this bearing of a view's heading
     switch_margin: float = 1.0  # m: keep the current goal unless another scores this much better
     blacklist_radius: float = 0.5  # m
     free_threshold: int = 25
@@ -35,7 +38,7 @@ class PlannerParams:
 class Plan:
     goal: tuple  # (x, y) in the map frame
     path: np.ndarray  # (K, 2) x, y from the robot to the goal
-    look_yaw: float  # heading that faces the frontier from the goal
+    look_yaws: list  # headings to turn through at the goal to see its frontier
     cost: float  # path cost, m
     frontier_size: float  # m
     gain: float  # m^2 of unknown space behind the frontier
@@ -102,84 +105,109 @@ class MapPlanner:
             mask |= (xs - x) ** 2 + (ys - y) ** 2 <= r2
         return mask
 
-    def plan(self, x, y, excluded_points=(), current_goal=None):
+    def plan(self, x, y, excluded_points=(), current_goal=None, views=()):
         """Plan from (x, y) to the best frontier; None if no frontier is reachable.
-        With `current_goal` (x, y), keep it while it still observes a frontier and scores
-        within switch_margin of the best."""
+
+        `excluded_points`: blacklisted goals (x, y). `current_goal` (x, y): keep it while
+        it still observes a frontier and scores within switch_margin of the best.
+        `views` (x, y, yaw): where the robot looked since the map was made; frontier
+        cells in view from there count as observed."""
         prep = self.prepared
         if prep is None or not prep.frontiers:
             return None
         p = self.params
         g = prep.geometry
+        labels, frontiers = self._unseen(prep.labels, prep.frontiers, views)
+        if not frontiers:
+            return None
         start = tuple(int(v) for v in g.to_cell(x, y))
         snap = int(math.ceil(0.5 / g.resolution))
         dist = distance_field(prep.costmap, start, g.resolution, snap_cells=snap)
         if dist is None:
             return None
         excluded = self._excluded(list(excluded_points))
-        kwargs = dict(
-            reach=(p.reach_min, p.reach_max), info_weight=p.info_weight, info_cap=p.info_cap
-        )
-        best = choose_goal(
-            dist,
-            prep.classes,
-            prep.labels,
-            prep.frontiers,
-            g.resolution,
-            excluded=excluded,
-            **kwargs,
-        )
+
+        def choose(mask):
+            return choose_goal(
+                dist,
+                prep.classes,
+                labels,
+                frontiers,
+                g.resolution,
+                reach=(p.reach_min, p.reach_max),
+                info_weight=p.info_weight,
+                info_cap=p.info_cap,
+                excluded=mask,
+            )
+
+        best = choose(excluded)
         if best is None:
             return None
         kept = False
         if current_goal is not None:
-            current = self._goal_score(dist, current_goal, excluded, **kwargs)
+            current = choose(self._all_but(current_goal, excluded))
             if current is not None and current.score <= best.score + p.switch_margin:
                 best, kept = current, True
         cells = extract_path(dist, best.cell)
         xs, ys = g.to_world(cells[:, 0], cells[:, 1])
-        path = np.column_stack([xs, ys])
-        path = np.vstack([[x, y], path])
+        path = np.vstack([[x, y], np.column_stack([xs, ys])])
         gx, gy = g.to_world(*best.cell)
-        look = self._look_yaw(best, gx, gy)
         return Plan(
             (float(gx), float(gy)),
             path,
-            look,
+            self._look_yaws(best, gx, gy),
             best.cost,
             best.size * g.resolution,
             best.gain,
-            len(prep.frontiers),
+            len(frontiers),
             kept,
         )
 
-    def _look_yaw(self, choice, gx, gy):
-        """Heading from the goal to the part of its frontier within view (3 m)."""
+    def _unseen(self, labels, frontiers, views):
+        """Labels and frontiers without the cells in view (range, field of view, line of
+        sight) from any of `views`."""
+        if not views:
+            return labels, frontiers
         prep = self.prepared
         g = prep.geometry
-        rows, cols = np.nonzero(prep.labels == choice.label)
+        rows, cols = np.nonzero(labels)
         xs, ys = g.to_world(rows, cols)
-        near = np.hypot(xs - gx, ys - gy) <= 3.0
-        if near.any():
-            xs, ys = xs[near], ys[near]
-        dx, dy = float(xs.mean() - gx), float(ys.mean() - gy)
-        return math.atan2(dy, dx) if math.hypot(dx, dy) > 1e-6 else 0.0
+        seen = np.zeros(rows.shape, dtype=bool)
+        for vx, vy, vyaw in views:
+            bearing = np.arctan2(ys - vy, xs - vx) - vyaw
+            bearing = np.arctan2(np.sin(bearing), np.cos(bearing))
+            in_view = (np.hypot(xs - vx, ys - vy) <= self.params.view_range) & (
+                np.abs(bearing) <= self.params.view_half_angle
+            )
+            idx = np.flatnonzero(in_view & ~seen)
+            if idx.size:
+                origin = tuple(int(v) for v in g.to_cell(vx, vy))
+                targets = np.column_stack([rows[idx], cols[idx]])
+                seen[idx[line_of_sight(prep.classes, origin, targets)]] = True
+        if not seen.any():
+            return labels, frontiers
+        labels = labels.copy()
+        labels[rows[seen], cols[seen]] = 0
+        left = set(np.unique(labels[labels > 0]).tolist())
+        return labels, [f for f in frontiers if f.label in left]
 
-    def _goal_score(self, dist, goal, excluded, **kwargs):
-        """The current goal re-scored on the new map, if it still observes a frontier."""
-        prep = self.prepared
-        g = prep.geometry
+    def _all_but(self, goal, excluded):
+        """An exclusion mask leaving only the 3 x 3 cells around `goal` (x, y)."""
+        g = self.prepared.geometry
         row, col = (int(v) for v in g.to_cell(*goal))
-        if not g.contains(row, col):
-            return None
-        # Reuse choose_goal restricted to the goal cell's neighbourhood (3 x 3).
         only = np.ones((g.height, g.width), dtype=bool)
-        only[max(0, row - 1) : row + 2, max(0, col - 1) : col + 2] = False
+        if g.contains(row, col):
+            only[max(0, row - 1) : row + 2, max(0, col - 1) : col + 2] = False
         if excluded is not None:
             only |= excluded
-        return choose_goal(
-            dist, prep.classes, prep.labels, prep.frontiers, g.resolution, excluded=only, **kwargs
-        )
+        return only
+
+    def _look_yaws(self, choice, gx, gy):
+        """Headings that sweep the sensor over the frontier cells seen from the goal."""
+        sx, sy = self.prepared.geometry.to_world(choice.seen[:, 0], choice.seen[:, 1])
+        bearings = np.arctan2(sy - gy, sx - gx)
+        p = self.params
+        return sweep_headings(bearings, p.view_half_angle, 2 * p.view_half_angle)
 
     def known_free_area(self):
         """m^2 of free cells on the planning grid."""

@@ -5,12 +5,12 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import ndimage
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import dijkstra
 
 from .frontiers import spread_labels
 from .grid import FREE
+from .visibility import line_of_sight
 
 # Half of the 8-neighbourhood (the graph is undirected): (drow, dcol).
 STEPS = ((0, 1), (1, 0), (1, 1), (1, -1))
@@ -122,6 +122,7 @@ class GoalChoice:
     score: float
     size: int  # frontier cells
     gain: float  # m^2 of unknown space the frontier opens onto
+    seen: np.ndarray  # (K, 2) row, col of the frontier cells in sight from the goal
 
 
 def choose_goal(
@@ -130,42 +131,92 @@ def choose_goal(
     labels,
     frontiers,
     resolution,
-    reach=(0.4, 1.2),
+    reach=(0.6, 2.5),
     info_weight=0.5,
     info_cap=8.0,
     excluded=None,
+    tries=40,
 ):
-    """Pick the frontier with the best score = path cost - info_weight * min(gain,
-    info_cap) (metres and square metres of unknown space behind it), and the cheapest
-    reachable cell that observes it from a geodesic distance within `reach` (metres).
-    `excluded` masks cells that must not be goals (blacklist). None if none is reachable."""
+    """Pick the best frontier and the cell to observe it from.
+
+    Score = path cost - info_weight * min(gain, info_cap) (metres; gain in m^2 of unknown
+    space behind the frontier). The goal cell is the cheapest reachable cell that sees
+    some of the frontier's cells in a straight line through free space at a distance
+    within `reach` (metres). `excluded` masks cells that must not be goals (blacklist).
+    Returns None when no frontier can be observed from a reachable cell."""
     if not frontiers:
         return None
-    min_steps = int(round(reach[0] / resolution))
-    max_steps = max(1, int(round(reach[1] / resolution)))
-    near, steps = spread_labels(labels, classes == FREE, max_steps)
-    candidate = (near > 0) & np.isfinite(field.distance) & (steps >= min_steps)
+    max_steps = max(1, int(np.ceil(reach[1] / resolution)))
+    near, _ = spread_labels(labels, classes == FREE, max_steps)
+    candidate = (near > 0) & np.isfinite(field.distance)
     if excluded is not None:
         candidate &= ~excluded
-    near = np.where(candidate, near, 0)
-    if not near.any():
+    if not candidate.any():
         return None
     by_label = {f.label: f for f in frontiers}
-    # Only labels with candidates: scipy reports 0 at (0, 0) for an absent label.
-    index = np.array([label for label in np.unique(near[near > 0]) if label in by_label])
-    if index.size == 0:
-        return None
-    masked = np.where(candidate, field.distance, np.inf)
-    costs = ndimage.minimum(masked, near, index)
-    positions = ndimage.minimum_position(masked, near, index)
+    rows, cols = np.nonzero(candidate)
+    cand_labels = near[rows, cols]
+    cand_cost = field.distance[rows, cols]
+    order = np.lexsort((cand_cost, cand_labels))
+    rows, cols, cand_labels, cand_cost = (a[order] for a in (rows, cols, cand_labels, cand_cost))
+    starts = np.flatnonzero(np.r_[True, cand_labels[1:] != cand_labels[:-1]])
+    ends = np.r_[starts[1:], len(cand_labels)]
+
+    def bonus(label):
+        return info_weight * min(by_label[label].gain * resolution**2, info_cap)
+
+    # Branch and bound: the cheapest candidate of a frontier bounds its score from below.
+    groups = [
+        (float(cand_cost[a]) - bonus(int(cand_labels[a])), a, b)
+        for a, b in zip(starts, ends, strict=True)
+        if int(cand_labels[a]) in by_label
+    ]
+    groups.sort()
+    frontier_cells = _cells_by_label(labels)
     best = None
-    for label, cost, pos in zip(index, costs, positions, strict=True):
-        if not np.isfinite(cost):
-            continue
-        frontier = by_label[label]
-        gain = frontier.gain * resolution**2
-        score = cost - info_weight * min(gain, info_cap)
-        if best is None or score < best.score:
-            cell = (int(pos[0]), int(pos[1]))
-            best = GoalChoice(int(label), cell, float(cost), score, frontier.size, gain)
+    for bound, a, b in groups:
+        if best is not None and bound >= best.score:
+            break
+        label = int(cand_labels[a])
+        targets = frontier_cells[label]
+        for i in _probe_order(b - a, tries):
+            k = a + i
+            score = float(cand_cost[k]) - bonus(label)
+            if best is not None and score >= best.score:
+                break
+            cell = (int(rows[k]), int(cols[k]))
+            dist = np.hypot(targets[:, 0] - cell[0], targets[:, 1] - cell[1]) * resolution
+            in_range = targets[(dist >= reach[0]) & (dist <= reach[1])]
+            seen = in_range[line_of_sight(classes, cell, in_range)]
+            if len(seen):
+                frontier = by_label[label]
+                gain = frontier.gain * resolution**2
+                best = GoalChoice(
+                    label, cell, float(cand_cost[k]), score, frontier.size, gain, seen
+                )
+                break
     return best
+
+
+def _cells_by_label(labels):
+    rows, cols = np.nonzero(labels)
+    values = labels[rows, cols]
+    order = np.argsort(values, kind="stable")
+    rows, cols, values = rows[order], cols[order], values[order]
+    splits = np.flatnonzero(np.diff(values)) + 1
+    cells = np.column_stack([rows, cols])
+    return {
+        int(group_values[0]): group
+        for group, group_values in zip(
+            np.split(cells, splits), np.split(values, splits), strict=True
+        )
+    }
+
+
+def _probe_order(count, tries):
+    """Candidate indices to test, cheapest first: the first few, then spread out."""
+    if count <= tries:
+        return range(count)
+    head = np.arange(tries // 2)
+    tail = np.linspace(tries // 2, count - 1, tries - tries // 2).astype(int)
+    return np.unique(np.concatenate([head, tail]))
