@@ -148,3 +148,15 @@ def test_base_name_accepts_file_suffixes():
 def test_yaw_quaternion_round_trip():
     for yaw in (0.0, 0.5, -1.2, 3.0):
         assert map_io.quaternion_to_yaw(*map_io.yaw_to_quaternion(yaw)) == pytest.approx(yaw)
+
+
+def test_unwritable_folder_names_the_map_file(tmp_path, monkeypatch):
+    import tempfile
+
+    def denied(*args, **kwargs):
+        raise PermissionError(13, "Permission denied", str(tmp_path / ".map.pgm.x.tmp"))
+
+    monkeypatch.setattr(tempfile, "mkstemp", denied)
+    with pytest.raises(PermissionError, match=r"cannot write .*map\.pgm: Permission denied"):
+        map_io.save_map(tmp_path / "map", make_map([[0]]))
+    assert list(tmp_path.iterdir()) == []

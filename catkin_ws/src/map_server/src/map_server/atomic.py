@@ -19,7 +19,10 @@ def write_files_atomically(contents):
             directory = path.parent if str(path.parent) else Path(".")
             if not directory.is_dir():
                 raise FileNotFoundError(f"cannot write {path}: no directory {directory}")
-            fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+            try:
+                fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+            except OSError as err:  # name the file the user asked for, not the temporary one
+                raise type(err)(err.errno, f"cannot write {path}: {err.strerror}") from None
             staged.append((tmp, path))
             with os.fdopen(fd, "wb") as handle:
                 handle.write(data)
