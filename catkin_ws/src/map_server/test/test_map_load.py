@@ -165,3 +165,16 @@ def test_unknown_keys_are_warned_not_fatal(tmp_path):
 def test_negate_accepts_booleans(tmp_path):
     assert load_probe(tmp_path, negate="true").config.negate is True
     assert load_probe(tmp_path, negate="false").config.negate is False
+
+
+def test_the_books_first_yaml_example(tmp_path):
+    """Chapter 9's example: negate 1, so white (high values) is occupied."""
+    write_pgm_p5(tmp_path / "map.pgm", [[255, 200, 100, 10]])
+    (tmp_path / "map.yaml").write_text(
+        "image: map.pgm\nresolution: 0.1\norigin: [0.0, 0.0, 0.0]\n"
+        "occupied_thresh: 0.65\nfree_thresh: 0.196\nnegate: 1\n"
+    )
+    omap = map_io.load_map(tmp_path / "map.yaml")
+    # p = v / 255: v > 165.75 (the book's 255 * 0.65) occupied, v < 49.98 free.
+    assert omap.data.tolist() == [[100, 100, -1, 0]]
+    assert omap.resolution == 0.1 and omap.config.warnings == ()
