@@ -112,11 +112,15 @@ def test_sim_time_stamp_follows_the_clock(ros, tmp_path):
     assert seconds(second["msg"]["info"]["map_load_time"]) == pytest.approx(42.0)
 
 
-def test_deprecated_image_resolution_form(ros, tmp_path):
+def test_deprecated_image_resolution_form_and_slashed_frame(ros, tmp_path):
     data, yaml_path = sample_map(tmp_path)
-    ros.start(["rosrun", "map_server", "map_server", str(tmp_path / "lab.pgm"), "0.25"])
+    ros.start(
+        ["rosrun", "map_server", "map_server", str(tmp_path / "lab.pgm"), "0.25"]
+        + ["_frame_id:=/floor"]
+    )
     ros.wait_for_topic("/map")
     (record,) = ros.echo("/map")
+    assert record["msg"]["header"]["frame_id"] == "floor"  # no tf2-invalid leading slash
     info = record["msg"]["info"]
     assert info["resolution"] == pytest.approx(0.25)
     assert info["origin"]["position"]["x"] == 0.0
