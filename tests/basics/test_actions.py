@@ -3,9 +3,12 @@
 import re
 import subprocess
 import time
+from pathlib import Path
 
 import pytest
-from roskit import free_port, ros_environment
+from roskit import DEBIAN_PYTHON, free_port, ros_environment
+
+SIM_CLOCK = Path(__file__).resolve().parent / "sim_clock.py"
 
 FEEDBACK = re.compile(
     r"^\[Feedback\] Time elapsed: (\S+)\n\[Feedback\] Time remaining: (\S+)$", re.M
@@ -61,6 +64,22 @@ def test_too_long_and_negative_goals_abort_at_once(fancy):
     assert status == "Timer aborted due to negative wait (-2.000000 s)"
 
 
+def test_timer_runs_on_sim_time(ros):
+    """Under /use_sim_time both nodes follow /clock: a 50 s goal at 20x takes about 2.5 s."""
+    ros.run(["rosparam", "set", "/use_sim_time", "true"])
+    ros.start([DEBIAN_PYTHON, str(SIM_CLOCK), "--start", "1000", "--speed", "20"])
+    ros.wait_for_topic("clock")
+    ros.start(["rosrun", "basics", "fancy_action_server.py"])
+    ros.wait_for_topic("timer/result")
+    started = time.monotonic()
+    feedback, (state, _, elapsed, updates) = fancy_client(ros, "--duration", "50")
+    wall = time.monotonic() - started
+    assert (state, updates, len(feedback)) == (3, 50, 50)
+    assert elapsed == pytest.approx(50.0, abs=0.5)
+    assert [round(e) for e, _ in feedback] == list(range(50))
+    assert wall < 30, f"{wall:.1f} s of wall time for 50 s of sim time: /clock not followed"
+
+
 def test_simple_client_waits_for_the_server_then_gets_five_seconds(ros):
     client = ros.start(["rosrun", "basics", "simple_action_client.py"])
     ros.wait_for(
@@ -82,24 +101,29 @@ def test_simple_server_aborts_a_negative_goal(ros):
     assert status.startswith("Timer aborted due to negative wait")
 
 
-@pytest.mark.parametrize(
-    "args, message",
-    [
-        (["--duration", "abc"], "argument --duration: not a number of seconds: 'abc'"),
-        (["--duration", "nan"], "argument --duration: seconds must be finite"),
-        (["--duration", "1e12"], "argument --duration: seconds must be finite"),
-        (["--preempt-after", "-1"], "argument --preempt-after: a delay cannot be negative"),
-        (["--preempt-after", "soon"], "argument --preempt-after: not a number of seconds"),
-    ],
-)
-def test_bad_client_arguments_are_usage_errors(args, message):
-    done = subprocess.run(
-        ["rosrun", "basics", "fancy_action_client.py", *args],
-        capture_output=True,
-        text=True,
-        env=ros_environment(free_port()),  # no master: the client fails before init_node
-        timeout=60,
-    )
-    assert done.returncode == 2
-    assert "usage: fancy_action_client.py" in done.stderr
-    assert message in done.stderr
+BAD_ARGUMENTS = [
+    (["--duration", "abc"], "argument --duration: not a number of seconds: 'abc'"),
+    (["--duration", "nan"], "argument --duration: seconds must be finite"),
+    (["--duration", "1e12"], "argument --duration: seconds must be finite"),
+    (["--preempt-after", "-1"], "argument --preempt-after: a delay cannot be negative"),
+    (["--preempt-after", "soon"], "argument --preempt-after: not a number of seconds"),
+]
+
+
+def test_bad_client_arguments_are_usage_errors():
+    env = ros_environment(free_port())  # no master: the client fails before init_node
+    runs = [
+        subprocess.Popen(
+            ["rosrun", "basics", "fancy_action_client.py", *args],
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+            env=env,
+        )
+        for args, _ in BAD_ARGUMENTS
+    ]
+    for run, (args, message) in zip(runs, BAD_ARGUMENTS, strict=True):
+        _, stderr = run.communicate(timeout=60)
+        assert run.returncode == 2, args
+        assert "usage: fancy_action_client.py" in stderr
+        assert message in stderr
