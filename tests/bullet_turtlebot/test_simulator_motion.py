@@ -131,3 +131,14 @@ def test_pause_and_step(ros, tmp_path):
     t1 = sim_time(ros)
     time.sleep(0.5)
     assert sim_time(ros) == t1
+
+
+def test_set_pose_teleports_and_refuses_obstacles(ros, tmp_path):
+    sim = start_simulator(ros, wall_ahead(tmp_path, 3.0))
+    pub = ["rostopic", "pub", "-1", "/simulator/set_pose", "geometry_msgs/Pose2D"]
+    ros.run([*pub, "{x: 1.0, y: 2.0, theta: 1.0}"])
+    ros.wait_for(lambda: last_pose(ros)[:2] == (1.0, 2.0), 30, "the robot at (1, 2)")
+    assert abs(last_pose(ros)[2] - 1.0) < 1e-6
+    ros.run([*pub, "{x: 3.5, y: 0.0, theta: 0.0}"])  # inside the wall
+    ros.wait_for(lambda: "inside an obstacle" in ros.output(sim), 30, "a warning")
+    assert last_pose(ros)[:2] == (1.0, 2.0)

@@ -14,7 +14,8 @@ Simulation::Simulation(std::shared_ptr<const World> world, const SimulationConfi
   const RobotGeometry& g = config_.geometry;
   if (world_->cylinder_collides(Eigen::Vector2d(start.x, start.y), g.radius, g.height, g.clearance)) {
     throw std::invalid_argument("start pose (" + std::to_string(start.x) + ", " + std::to_string(start.y) +
-                                ") puts the robot inside an obstacle");
+                                ") puts the robot inside an obstacle; choose another start (launch args x:= y:=, "
+                                "params ~x ~y, or `start: [x, y, yaw]` in the world file)");
   }
 }
 
