@@ -91,6 +91,14 @@ TEST(WorldSpec, ErrorsNameTheFileAndTheProblem) {
   expect_error("boxes:\n  - {pose: [0, 0, 0]}\n", "boxes[0] needs");
   expect_error("cylinders:\n  - {position: [0, 0], radius: -1, height: 1}\n", "cylinders[0].radius");
   expect_error("resolution: 0.05\n", "empty world");
+  expect_error("image: m.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 2\n", "'negate' must be 0 or 1");
+  expect_error("", "expected a YAML mapping");
+  try {
+    load_world_file(dir);
+    FAIL() << "no error for a directory";
+  } catch (const WorldFileError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
+  }
   write_file(dir + "/bad.pgm", "P5\n4 x\n255\n");
   expect_error("image: bad.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n", "bad height");
   write_file(dir + "/short.pgm", "P5\n4 4\n255\nab");

@@ -1,5 +1,6 @@
 #include "bullet_turtlebot/world_spec.hpp"
 
+#include <sys/stat.h>
 #include <yaml-cpp/yaml.h>
 
 #include <cerrno>
@@ -125,10 +126,11 @@ WorldSpec parse_world_yaml(const std::string& text, const std::string& source, c
     const auto origin = parser.numbers(root["origin"], "origin", 3, 3);
     grid.origin = Pose2D{origin[0], origin[1], origin[2]};
     bool negate = false;
-    if (root["negate"]) {
-      const double n = parser.number(root["negate"], "negate");
-      if (n != 0 && n != 1) parser.fail("'negate' must be 0 or 1");
-      negate = n == 1;
+    if (const YAML::Node n = root["negate"]) {
+      const std::string v = n.IsScalar() ? n.Scalar() : "";
+      if (v == "0" || v == "false") negate = false;
+      else if (v == "1" || v == "true") negate = true;
+      else parser.fail("'negate' must be 0 or 1");
     }
     double occupied_thresh = 0.65;
     if (root["occupied_thresh"]) {
@@ -197,6 +199,10 @@ WorldSpec parse_world_yaml(const std::string& text, const std::string& source, c
 }
 
 WorldSpec load_world_file(const std::string& path) {
+  struct stat info;
+  if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode)) {
+    throw WorldFileError("world file '" + path + "': is a directory, expected a YAML file");
+  }
   std::ifstream in(path);
   if (!in) throw WorldFileError("world file '" + path + "': cannot open: " + std::strerror(errno));
   std::ostringstream text;
