@@ -14,18 +14,17 @@ import threading
 import time
 from pathlib import Path
 
+import genpy
 import rospy
 import rostopic
 
 
 def to_plain(value):
     """Turn a ROS message (or field) into JSON-serialisable data."""
+    if isinstance(value, genpy.TVal):  # Time and Duration: seconds as a float
+        return value.secs + value.nsecs * 1e-9
     if hasattr(value, "__slots__") and hasattr(value, "_slot_types"):
         return {name: to_plain(getattr(value, name)) for name in value.__slots__}
-    if isinstance(value, (rospy.Time, rospy.Duration)) or (
-        hasattr(value, "secs") and hasattr(value, "nsecs")
-    ):
-        return value.secs + value.nsecs * 1e-9
     if isinstance(value, bytes):
         return list(value)
     if isinstance(value, (list, tuple)):

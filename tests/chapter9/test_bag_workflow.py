@@ -1,0 +1,173 @@
+"""Chapter 9 end to end, with the book's own commands: record a bag of /scan and /tf from the
+simulated Turtlebot, stop the simulator, build a map from the bag with slam_gmapping under
+sim time, save it with map_saver, serve it with map_server, and check it against the world.
+"""
+
+import math
+import re
+import signal
+import time
+from pathlib import Path
+
+import numpy as np
+from map_server.map_io import load_map
+from rosbook_demo.grids import occupied_points
+from rosbook_demo.scoring import wall_hits
+
+SIM_SECONDS = 150.0
+SPEED = 5.0
+START = (-8.5, 0.0, 0.0)  # the office world's start pose: where SLAM's map frame lies
+
+
+def clock(ros):
+    return ros.echo("/clock", count=1)[0]["msg"]["clock"]
+
+
+def record_office_bag(ros, tmp_path):
+    """The book's step 1: drive around while `rosbag record -O data.bag /scan /tf` runs."""
+    sim = ros.start(
+        [
+            "roslaunch",
+            "turtlebot_stage",
+            "turtlebot_in_stage.launch",
+            "world:=office",
+            "rviz:=false",
+            f"speed:={SPEED}",
+            "seed:=3",
+        ],
+        name="sim",
+    )
+    ros.wait_for_topic("/scan", timeout=60)
+    wander = ros.start(
+        ["rosrun", "wanderbot", "wander.py", "cmd_vel:=cmd_vel_mux/input/teleop"], name="wander"
+    )
+    recorder = ros.start(["rosbag", "record", "-O", "data.bag", "/scan", "/tf"], name="record")
+    ros.wait_for(lambda: (tmp_path / "data.bag.active").exists(), 30, "rosbag record to start")
+    start = clock(ros)
+    ros.wait_for(
+        lambda: clock(ros) >= start + SIM_SECONDS,
+        SIM_SECONDS / SPEED * 4 + 60,
+        f"{SIM_SECONDS} s of simulated driving",
+    )
+    ros.stop(recorder)
+    ros.wait_for(lambda: (tmp_path / "data.bag").exists(), 30, "data.bag to be closed")
+    # The book stops the simulator so that its scans do not mix with the bag's.
+    ros.stop(wander)
+    ros.stop(sim)
+    return tmp_path / "data.bag"
+
+
+def test_record_map_save_serve_and_score(ros, tmp_path):
+    bag = record_office_bag(ros, tmp_path)
+
+    info = ros.run(["rosbag", "info", str(bag)]).stdout
+    assert re.search(r"/scan\s+(\d+) msgs\s+: sensor_msgs/LaserScan", info), info
+    assert re.search(r"/tf\s+(\d+) msgs\s+: tf2_msgs/TFMessage", info), info
+    scans = int(re.search(r"/scan\s+(\d+) msgs", info).group(1))
+    assert scans >= 0.9 * 10 * SIM_SECONDS  # 10 Hz scan
+
+    # The book's step 2, with the parameter changes it recommends for the Turtlebot.
+    ros.run(["rosparam", "set", "use_sim_time", "true"])
+    for name, value in [
+        ("angularUpdate", 0.1),
+        ("linearUpdate", 0.1),
+        ("lskip", 10),
+        ("xmax", 10),
+        ("xmin", -10),
+        ("ymax", 10),
+        ("ymin", -10),
+        ("base_frame", "base_footprint"),
+    ]:
+        ros.run(["rosparam", "set", f"/slam_gmapping/{name}", str(value)])
+    slam = ros.start(["rosrun", "gmapping", "slam_gmapping"], name="slam_gmapping")
+    ros.wait_for(
+        lambda: "/slam_gmapping" in ros.run(["rosnode", "list"]).stdout.split(),
+        30,
+        "slam_gmapping to start",
+    )
+    time.sleep(1.0)
+    play = ros.start(["rosbag", "play", "--clock", "-r", str(SPEED), str(bag)], name="play")
+    assert play.wait(timeout=SIM_SECONDS / SPEED * 6 + 60) == 0, ros.output(play)
+    assert slam.poll() is None, ros.output(slam)
+
+    # Step 3: save it while slam_gmapping still runs.
+    saved = ros.run(["rosrun", "map_server", "map_saver", "-f", "office_map"], timeout=90)
+    assert "office_map.pgm" in saved.stdout + saved.stderr
+    yaml_text = (tmp_path / "office_map.yaml").read_text()
+    for key in (
+        "image: office_map.pgm",
+        "resolution: 0.050000",
+        "negate: 0",
+        "occupied_thresh: 0.65",
+        "free_thresh: 0.196",
+    ):
+        assert key in yaml_text, yaml_text
+    saved_map = load_map(str(tmp_path / "office_map.yaml"))
+    assert saved_map.resolution == 0.05
+    # The book's bounds, 20 m x 20 m around the start, grown where the robot drove beyond.
+    assert saved_map.width >= 400 and saved_map.height >= 400
+    assert saved_map.origin[0] <= -10.0 and saved_map.origin[1] <= -10.0
+    ros.stop(slam, sig=signal.SIGINT)
+
+    # Step 4: serve the saved map and compare it cell by cell.
+    ros.start(["rosrun", "map_server", "map_server", "office_map.yaml"], name="map_server")
+    served = ros.echo("/map", count=1, timeout=30)[0]["msg"]
+    info_msg = served["info"]
+    assert (info_msg["width"], info_msg["height"]) == (saved_map.width, saved_map.height)
+    assert math.isclose(info_msg["resolution"], 0.05, rel_tol=1e-6)
+    assert np.array_equal(np.array(served["data"], dtype=np.int8), saved_map.flat())
+    metadata = ros.echo("/map_metadata", count=1)[0]["msg"]
+    assert metadata["width"] == saved_map.width
+
+    # Accuracy: the map frame is where the robot started in the world.
+    ros.run(
+        [
+            "rosrun",
+            "bullet_turtlebot",
+            "world_to_map",
+            "office",
+            "-f",
+            "truth",
+            "--resolution",
+            "0.05",
+        ]
+    )
+    truth = load_map(str(tmp_path / "truth.yaml"))
+    ox, oy, _ = saved_map.origin
+    slam_in_world = (saved_map.data, saved_map.resolution, (START[0] + ox, START[1] + oy, 0.0))
+    walls = occupied_points(slam_in_world)
+    assert len(walls) > 500, "the map shows almost no walls"
+    share = wall_hits(walls, (truth.data, truth.resolution, truth.origin), 0.10)
+    print(f"chapter 9 bag workflow: {len(walls)} wall cells, {100 * share:.1f}% within 0.10 m")
+    # A wandering robot, the book's parameters and drifting odometry: the project's
+    # measured figure is in the README; 65% still rules out a wrong frame or a smeared map.
+    assert share >= 0.65
+    known = np.count_nonzero(saved_map.data == 0) * 0.05**2
+    assert known > 40.0, f"only {known:.1f} m² mapped as free"
+
+
+def test_book_bag_holds_the_whole_tf_chain(ros, tmp_path):
+    """`rosbag record /scan /tf` must be enough: the bag carries base_footprint → laser."""
+    bag = Path(tmp_path / "data.bag")
+    sim = ros.start(
+        ["roslaunch", "turtlebot_gazebo", "turtlebot_playground.launch", f"speed:={SPEED}"],
+        name="sim",
+    )
+    ros.wait_for_topic("/scan", timeout=60)
+    recorder = ros.start(["rosbag", "record", "-O", str(bag), "/scan", "/tf"], name="record")
+    ros.wait_for(lambda: Path(str(bag) + ".active").exists(), 30, "rosbag record to start")
+    start = clock(ros)
+    ros.wait_for(lambda: clock(ros) >= start + 5.0, 30, "5 s of sim time")
+    ros.stop(recorder)
+    ros.stop(sim)
+    import rosbag
+
+    edges = set()
+    with rosbag.Bag(str(bag)) as recorded:
+        for _, msg, _ in recorded.read_messages(["/tf"]):
+            edges |= {(t.header.frame_id, t.child_frame_id) for t in msg.transforms}
+    chain = [("odom", "base_footprint"), ("base_footprint", "base_link")]
+    for edge in chain:
+        assert edge in edges, edges
+    children = {child for _, child in edges}
+    assert "camera_depth_frame" in children, edges
