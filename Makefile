@@ -8,10 +8,10 @@ build:
 	@./scripts/build.sh
 
 demo: setup
-	@./scripts/demo.sh
+	@./scripts/demo.sh $(ARGS)
 
 test: setup
-	@./scripts/test.sh
+	@./scripts/test.sh $(ARGS)
 
 bench: setup
 	@./scripts/bench.sh
