@@ -6,6 +6,12 @@
 
 namespace gmapping_lite {
 
+namespace {
+// Tuned on the simulator's office world (Turtlebot odometry, 58-degree fake laser).
+constexpr double kPriorFloorXY = 0.12;      // m
+constexpr double kPriorFloorTheta = 0.045;  // rad
+}  // namespace
+
 ParticleFilter::ParticleFilter(const SlamParams& params)
     : params_(params),
       motion_(params.motion),
@@ -109,12 +115,19 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
   if (!due) return report;
 
   const ScanPoints points = matcher_.matchPoints(laser, ranges);
+  // The match may move a particle about as far as odometry could plausibly be off: the
+  // motion model's spread for this increment, plus a floor for what it does not model.
+  const Pose2 inc = odom.relativeTo(last_odom_);
+  const double dist = std::hypot(inc.x, inc.y), turn = std::fabs(inc.theta);
+  const OdometryPrior prior{
+      kPriorFloorXY + params_.motion.srr * dist + params_.motion.str * turn,
+      kPriorFloorTheta + params_.motion.stt * turn + params_.motion.srt * dist};
   double best_score = -1.0;
   for (auto& p : particles_) {
     p.pose = motion_.sample(p.pose, last_odom_, odom, rng_);
     matcher_.prepare(p.map, p.pose, points);
     Pose2 corrected;
-    const double score = matcher_.optimize(p.pose, points, &corrected);
+    const double score = matcher_.optimize(p.pose, points, &corrected, prior);
     if (score > params_.minimum_score) {
       p.pose = corrected;
     } else {

@@ -135,12 +135,14 @@ double ScanMatcher::likelihood(const Pose2& pose, const ScanPoints& scan, double
   return l;
 }
 
-double ScanMatcher::optimize(const Pose2& start, const ScanPoints& scan, Pose2* best) const {
+double ScanMatcher::optimize(const Pose2& start, const ScanPoints& scan, Pose2* best,
+                             const OdometryPrior& prior) const {
+  const double k_xy = prior.sigma_xy > 0 ? 0.5 / (prior.sigma_xy * prior.sigma_xy) : 0.0;
+  const double k_th = prior.sigma_theta > 0 ? 0.5 / (prior.sigma_theta * prior.sigma_theta) : 0.0;
   auto odometryGain = [&](const Pose2& p) {
     const double dx = p.x - start.x, dy = p.y - start.y;
     const double dth = normalizeAngle(p.theta - start.theta);
-    return std::exp(-params_.linear_odometry_reliability * (dx * dx + dy * dy) -
-                    params_.angular_odometry_reliability * dth * dth);
+    return std::exp(-k_xy * (dx * dx + dy * dy) - k_th * dth * dth);
   };
   Pose2 current = start;
   double ldelta = params_.lstep, adelta = params_.astep;
@@ -172,10 +174,12 @@ double ScanMatcher::optimize(const Pose2& start, const ScanPoints& scan, Pose2* 
     ldelta *= 0.5;
     adelta *= 0.5;
   }
+  // Keep the ICP polish only if it is better under the same odometry prior.
   const Pose2 refined = refine(current, scan);
   const double climbed = score(current, scan), polished = score(refined, scan);
-  *best = polished >= climbed ? refined : current;
-  return std::max(climbed, polished);
+  const bool take = polished * odometryGain(refined) >= climbed * odometryGain(current);
+  *best = take ? refined : current;
+  return take ? polished : climbed;
 }
 
 Pose2 ScanMatcher::refine(const Pose2& start, const ScanPoints& scan) const {
@@ -221,9 +225,9 @@ Pose2 ScanMatcher::refine(const Pose2& start, const ScanPoints& scan) const {
 }
 
 double ScanMatcher::match(const GridMap& map, const Pose2& start, const ScanPoints& scan,
-                          Pose2* best) {
+                          Pose2* best, const OdometryPrior& prior) {
   prepare(map, start, scan);
-  return optimize(start, scan, best);
+  return optimize(start, scan, best, prior);
 }
 
 void registerScan(GridMap* map, const Pose2& pose, const LaserGeometry& laser,

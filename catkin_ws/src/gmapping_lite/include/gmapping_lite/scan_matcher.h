@@ -28,11 +28,15 @@ struct MatcherParams {
   double max_urange = 8.0;   // returns beyond this clear space but mark nothing
   double fullness = 0.1;     // a cell with occupancy above this counts as occupied
   double field_radius = 0.5; // how far the likelihood field looks for occupied cells (m)
-  // gmapping's odometry reliabilities: in the coarse levels a candidate's score is multiplied
-  // by exp(-linear * d^2 - angular * dtheta^2) for its distance from the odometry guess, so a
-  // featureless corridor cannot drag the pose far from where odometry put it.
-  double linear_odometry_reliability = 3.0;
-  double angular_odometry_reliability = 20.0;
+};
+
+// How far odometry's guess may be off (standard deviations): a candidate's score is
+// multiplied by exp(-d^2 / 2 sigma_xy^2 - dtheta^2 / 2 sigma_theta^2) for its distance from the
+// guess (gmapping's "odometry reliability"), so a featureless corridor or a lone wall cannot
+// drag the pose away from where odometry put it. sigma <= 0 disables a term.
+struct OdometryPrior {
+  double sigma_xy = 0.0;
+  double sigma_theta = 0.0;
 };
 
 // The beams of one scan that matching uses, as end points in the base frame.
@@ -92,10 +96,12 @@ class ScanMatcher {
   // Log-likelihood of the scan at `pose`, and its score.
   double likelihood(const Pose2& pose, const ScanPoints& scan, double* score) const;
   // Hill-climb from `start`; returns the best score and writes the best pose.
-  double optimize(const Pose2& start, const ScanPoints& scan, Pose2* best) const;
+  double optimize(const Pose2& start, const ScanPoints& scan, Pose2* best,
+                  const OdometryPrior& prior = {}) const;
 
   // Convenience: prepare + optimize against `map`.
-  double match(const GridMap& map, const Pose2& start, const ScanPoints& scan, Pose2* best);
+  double match(const GridMap& map, const Pose2& start, const ScanPoints& scan, Pose2* best,
+               const OdometryPrior& prior = {});
 
  private:
   double scoreAt(const Pose2& pose, const ScanPoints& scan, double inv_two_sigma2) const;
