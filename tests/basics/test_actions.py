@@ -9,6 +9,7 @@ import pytest
 from roskit import DEBIAN_PYTHON, free_port, ros_environment
 
 SIM_CLOCK = Path(__file__).resolve().parent / "sim_clock.py"
+SCRIPTS = Path(__file__).resolve().parents[2] / "catkin_ws" / "src" / "basics" / "scripts"
 
 FEEDBACK = re.compile(
     r"^\[Feedback\] Time elapsed: (\S+)\n\[Feedback\] Time remaining: (\S+)$", re.M
@@ -29,9 +30,9 @@ def fancy_client(ros, *args):
 
 
 @pytest.fixture
-def fancy(ros):
+def fancy(ros, master):
     ros.start(["rosrun", "basics", "fancy_action_server.py"])
-    ros.wait_for_topic("timer/result")
+    master.wait_for_topic("timer/result")
     return ros
 
 
@@ -64,13 +65,13 @@ def test_too_long_and_negative_goals_abort_at_once(fancy):
     assert status == "Timer aborted due to negative wait (-2.000000 s)"
 
 
-def test_timer_runs_on_sim_time(ros):
+def test_timer_runs_on_sim_time(ros, master):
     """Under /use_sim_time both nodes follow /clock: a 50 s goal at 20x takes about 2.5 s."""
     ros.run(["rosparam", "set", "/use_sim_time", "true"])
     ros.start([DEBIAN_PYTHON, str(SIM_CLOCK), "--start", "1000", "--speed", "20"])
-    ros.wait_for_topic("clock")
+    master.wait_for_topic("clock")
     ros.start(["rosrun", "basics", "fancy_action_server.py"])
-    ros.wait_for_topic("timer/result")
+    master.wait_for_topic("timer/result")
     started = time.monotonic()
     feedback, (state, _, elapsed, updates) = fancy_client(ros, "--duration", "50")
     wall = time.monotonic() - started
@@ -84,6 +85,7 @@ def test_simple_client_waits_for_the_server_then_gets_five_seconds(ros):
     client = ros.start(["rosrun", "basics", "simple_action_client.py"])
     ros.wait_for(
         lambda: "waiting for the action server /timer" in ros.output(client),
+        timeout=60,
         what="the client to wait",
     )
     assert client.poll() is None
@@ -93,9 +95,9 @@ def test_simple_client_waits_for_the_server_then_gets_five_seconds(ros):
     assert 5.0 <= elapsed < 5.25
 
 
-def test_simple_server_aborts_a_negative_goal(ros):
+def test_simple_server_aborts_a_negative_goal(ros, master):
     ros.start(["rosrun", "basics", "simple_action_server.py"])
-    ros.wait_for_topic("timer/result")
+    master.wait_for_topic("timer/result")
     feedback, (state, status, _, updates) = fancy_client(ros, "--duration", "-1")
     assert (state, updates, feedback) == (4, 0, [])
     assert status.startswith("Timer aborted due to negative wait")
@@ -114,7 +116,7 @@ def test_bad_client_arguments_are_usage_errors():
     env = ros_environment(free_port())  # no master: the client fails before init_node
     runs = [
         subprocess.Popen(
-            ["rosrun", "basics", "fancy_action_client.py", *args],
+            [str(SCRIPTS / "fancy_action_client.py"), *args],
             stdout=subprocess.PIPE,
             stderr=subprocess.PIPE,
             text=True,

@@ -3,17 +3,14 @@
 import signal
 
 
-def test_talker_listener_launch(ros):
+def test_talker_listener_launch(ros, master):
     launch = ros.start(["roslaunch", "basics", "talker_listener.launch"])
-
-    def nodes():
-        return set(ros.run(["rosnode", "list"], check=False).stdout.split())
-
-    ros.wait_for(lambda: {"/talker", "/listener"} <= nodes(), timeout=40, what="both nodes")
+    pair = {"/talker", "/listener"}
+    ros.wait_for(lambda: pair <= master.nodes(), timeout=60, what="both nodes")
     ros.wait_for(
         lambda: "/listener I heard hello world" in ros.output(launch),
-        timeout=30,
+        timeout=60,
         what="the listener to hear the talker",
     )
     assert ros.stop(launch, sig=signal.SIGINT, timeout=30) == 0
-    ros.wait_for(lambda: not ({"/talker", "/listener"} & nodes()), what="nodes to go")
+    ros.wait_for(lambda: not (pair & master.nodes()), timeout=30, what="the nodes to go")
