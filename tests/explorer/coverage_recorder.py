@@ -37,12 +37,24 @@ def truth_points(truth_yaml, start):
     return xs, ys
 
 
+def save_pgm(raw, path):
+    """map_saver's trinary PGM (254 free, 0 occupied, 205 unknown), top row first."""
+    pixels = np.full(raw.data.shape, 205, dtype=np.uint8)
+    pixels[(raw.data >= 0) & (raw.data <= 25)] = 254
+    pixels[raw.data >= 65] = 0
+    header = f"P5\n{raw.width} {raw.height}\n255\n".encode()
+    tmp = Path(path).with_suffix(".tmp")
+    tmp.write_bytes(header + np.flipud(pixels).tobytes())
+    tmp.replace(path)
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--truth", required=True)
     parser.add_argument("--start", type=float, nargs=3, required=True)
     parser.add_argument("--out", required=True)
     parser.add_argument("--period", type=float, default=10.0)
+    parser.add_argument("--save-map", help="write the latest map here (PGM) at each record")
     args = parser.parse_args(rospy.myargv()[1:])
     rospy.init_node("coverage_recorder")
 
@@ -114,6 +126,8 @@ def main():
             }
             out.write(json.dumps(record) + "\n")
             out.flush()
+            if args.save_map and raw is not None:
+                save_pgm(raw, args.save_map)
         time.sleep(0.01)
 
 

@@ -168,10 +168,13 @@ def explore(
     scan_period=0.2,
     robot_radius=0.18,
     checkpoints=(100, 200, 300, 400, 600),
+    update=(0.5, 0.436),
 ):
     """Drive `explorer` (exploration.Explorer) with `planner` (map_planner.MapPlanner) in
-    `world` from `start` (x, y, yaw) for `seconds` of simulated time."""
+    `world` from `start` (x, y, yaw) for `seconds` of simulated time. The map integrates
+    a scan only after `update` = (metres, radians) of motion, as gmapping does."""
     x, y, yaw = start
+    last_update = (x, y, yaw, True)
     mapper = Mapper(world)
     reachable = world.free_region(x, y)
     clearance_grid = world.clearance()
@@ -185,7 +188,12 @@ def explore(
         if now >= next_scan:
             sx, sy = x + CAMERA_X * math.cos(yaw), y + CAMERA_X * math.sin(yaw)
             angles, ranges = cast_fan(world, sx, sy, yaw)
-            mapper.integrate(sx, sy, yaw, angles, ranges)
+            # Like gmapping: integrate a scan only after moving or turning enough.
+            moved = math.hypot(x - last_update[0], y - last_update[1])
+            turned = abs(math.remainder(yaw - last_update[2], 2 * math.pi))
+            if moved >= update[0] or turned >= update[1] or last_update[3]:
+                mapper.integrate(sx, sy, yaw, angles, ranges)
+                last_update = (x, y, yaw, False)
             ahead = _clearance(angles, ranges, robot_radius)
             next_scan += scan_period
         if now >= next_map:

@@ -80,6 +80,8 @@ def run_exploration(ros, tmp_path, world="office", use_slam=True):
             str(out),
             "--period",
             "10",
+            "--save-map",
+            str(tmp_path / "map.pgm"),
         ],
         name="coverage_recorder",
     )

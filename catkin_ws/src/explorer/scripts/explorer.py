@@ -74,6 +74,7 @@ class ExplorerNode:
         self.base_frame = rospy.get_param("~base_frame", "base_footprint")
         self.control_rate = param("control_rate", 10.0)
         self.log_period = param("log_period", 30.0)
+        self.scan_timeout = param("scan_timeout", 2.0)
         self.scan_half_width = planner_params.robot_radius + 0.04
         self.planner = MapPlanner(planner_params)
         self.explorer = Explorer(
@@ -168,7 +169,7 @@ class ExplorerNode:
         if pose is not None:
             with self.lock:
                 clearance = self.clearance
-            if clearance is None or now - clearance[0] > 1.0:
+            if clearance is None or now - clearance[0] > self.scan_timeout:
                 rospy.logwarn_throttle(10, "explorer: no recent scan: not driving forward")
                 ahead = 0.0
             else:
@@ -196,7 +197,7 @@ class ExplorerNode:
 
     def report(self, events, now):
         for event in events:
-            rospy.loginfo(f"explorer: {event} (travelled {self.travelled:.1f} m)")
+            rospy.loginfo(f"explorer: t={now:.1f} s: {event} (travelled {self.travelled:.1f} m)")
         if self.last_log is None:
             self.last_log = now
         if now - self.last_log >= self.log_period:

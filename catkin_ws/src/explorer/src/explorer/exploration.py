@@ -30,6 +30,7 @@ class ExplorerParams:
     goal_timeout_factor: float = 3.0  # give up a goal after this x its expected time
     goal_timeout_min: float = 20.0  # s
     done_after: int = 2  # consecutive plans without a frontier before declaring done
+    max_visits: int = 3  # reaching the same goal this often (in blacklist_timeout) blacklists it
 
 
 class Explorer:
@@ -181,10 +182,12 @@ class Explorer:
         self.events.append(f"reached goal ({gx:.2f}, {gy:.2f})")
         timeout = self.params.blacklist_timeout
         self.reached = [r for r in self.reached if now - r[2] < timeout]
-        if any(math.hypot(rx - gx, ry - gy) < self.blacklist.radius for rx, ry, _ in self.reached):
-            # Back where we already looked, and the frontier is still there: it cannot
-            # be seen from here (too low, too close, too far): stop coming back.
-            self.events.append(f"goal ({gx:.2f}, {gy:.2f}) reached twice: blacklisted")
+        radius = self.blacklist.radius
+        visits = sum(math.hypot(rx - gx, ry - gy) < radius for rx, ry, _ in self.reached)
+        if visits >= self.params.max_visits - 1:
+            # Back again where we already looked, and a frontier is still in sight: it
+            # cannot be mapped from here (too low, too close, too far): stop coming back.
+            self.events.append(f"goal ({gx:.2f}, {gy:.2f}) reached {visits + 1} times: blacklisted")
             self.blacklist.add(gx, gy, now)
         self.reached.append((gx, gy, now))
 

@@ -28,6 +28,7 @@ class PlannerParams:
     info_cap: float = 15.0  # m^2: gain beyond this earns no more bonus
     view_range: float = 4.0  # m: frontier cells this near a view count as seen
     view_half_angle: float = 0.45  # rad: within this bearing of a view's heading
+    look_wiggle: float = 0.5  # rad: turn at least this much while looking at a frontier
     switch_margin: float = 1.0  # m: keep the current goal unless another scores this much better
     blacklist_radius: float = 0.5  # m
     free_threshold: int = 25
@@ -207,7 +208,14 @@ class MapPlanner:
         sx, sy = self.prepared.geometry.to_world(choice.seen[:, 0], choice.seen[:, 1])
         bearings = np.arctan2(sy - gy, sx - gx)
         p = self.params
-        return sweep_headings(bearings, p.view_half_angle, 2 * p.view_half_angle)
+        headings = sweep_headings(bearings, p.view_half_angle, 2 * p.view_half_angle)
+        if len(headings) == 1 and p.look_wiggle > 0:
+            # Turn across the heading: SLAM integrates a scan only after the robot turned
+            # angularUpdate (0.436 rad in the Turtlebot tuning), so a look that turns
+            # less may never reach the map.
+            h = headings[0]
+            headings = [h - p.look_wiggle / 2, h + p.look_wiggle / 2]
+        return headings
 
     def known_free_area(self):
         """m^2 of free cells on the planning grid."""
