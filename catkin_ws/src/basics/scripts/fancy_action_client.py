@@ -33,7 +33,7 @@ def main():
         "--preempt-after",
         type=timer.delay_arg,
         metavar="SECONDS",
-        help="cancel the goal this many seconds after sending it (the book uses 3)",
+        help="cancel the goal if still running this many seconds after sending it (book: 3)",
     )
     args = parser.parse_args(rospy.myargv()[1:])
 
@@ -48,8 +48,11 @@ def main():
     goal.time_to_wait = rospy.Duration.from_sec(args.duration)
     client.send_goal(goal, feedback_cb=feedback_cb)
     if args.preempt_after is not None:
-        rospy.sleep(args.preempt_after)
-        client.cancel_goal()
+        # The book sleeps, then cancels; waiting for the result instead ends early when the
+        # goal finishes first (a zero timeout would mean "forever", hence the check).
+        patience = rospy.Duration.from_sec(args.preempt_after)
+        if args.preempt_after == 0 or not client.wait_for_result(patience):
+            client.cancel_goal()
 
     if not client.wait_for_result():
         return 1
