@@ -37,6 +37,15 @@ struct SweepResult {
 
 class World;
 
+// Where a vertical-sided solid lies along one horizontal direction from the fan's origin:
+// horizontal distances [s_in, s_out], heights [z_lo, z_hi], the side's normal at s_in.
+struct Span {
+  double s_in = 0.0, s_out = 0.0;
+  double z_lo = 0.0, z_hi = 0.0;
+  Eigen::Vector2d side_normal = Eigen::Vector2d::Zero();
+  int solid = -1;
+};
+
 // Many rays from one origin (a scan, a camera frame): Bullet's broadphase gathers the solids
 // within reach once, then each ray tests only the solids whose horizontal angular sector
 // (seen from the origin) contains its azimuth, nearest first, stopping early. Exact results,
@@ -52,6 +61,10 @@ class RayFan {
   bool cast_in_bin(int bin, const Eigen::Vector3d& dir, double max_distance, RayHit* hit,
                    bool include_floor = true) const;
   size_t candidates() const { return candidates_; }
+  // Every solid the horizontal ray from the origin along `dir` (unit, 2D) crosses within
+  // max_s, sorted by s_in. A level camera's column shares this line, so its pixels can be
+  // resolved from the spans with a few multiplications each (see render_depth).
+  void column_spans(int bin, const Eigen::Vector2d& dir, double max_s, std::vector<Span>* spans) const;
 
  private:
   struct Entry {

@@ -7,28 +7,10 @@
 namespace bullet_turtlebot {
 namespace {
 
-// Unit ray direction in the world for a pixel of a level camera with heading `yaw`.
-// The optical frame looks along +x of the camera frame: image right = -y, image down = -z.
 struct Intrinsics {
   double f, cx, cy;
   explicit Intrinsics(const CameraConfig& camera) : f(camera.focal()), cx(camera.cx()), cy(camera.cy()) {}
 };
-
-Eigen::Vector3d pixel_ray(const Intrinsics& k, double cos_yaw, double sin_yaw, int u, int v, double* norm) {
-  const double right = (u - k.cx) / k.f;
-  const double down = (v - k.cy) / k.f;
-  const Eigen::Vector3d body(1.0, -right, -down);
-  *norm = body.norm();
-  return Eigen::Vector3d(cos_yaw * body.x() - sin_yaw * body.y(), sin_yaw * body.x() + cos_yaw * body.y(),
-                         body.z()) /
-         *norm;
-}
-
-// Length of the longest pixel ray per unit of depth (the image corner).
-double corner_norm(const CameraConfig& camera) {
-  const double f = camera.focal();
-  return Eigen::Vector3d(1.0, camera.cx() / f, camera.cy() / f).norm();
-}
 
 }  // namespace
 
@@ -72,23 +54,77 @@ void scan_ranges(const World& world, const LaserConfig& config, const SensorPose
   }
 }
 
+namespace {
+
+struct ColumnHit {
+  double s;  // horizontal distance from the camera
+  Eigen::Vector3d normal;
+  int solid;  // -1 floor
+};
+
+// First surface along a pixel ray of a column: height z(s) = z0 + slope * s over the
+// horizontal distance s; spans sorted by s_in; the floor is z = 0.
+bool resolve_column(const std::vector<Span>& spans, double z0, double slope, double max_s, ColumnHit* hit) {
+  double best = max_s;
+  bool found = false;
+  for (const Span& span : spans) {
+    if (span.s_in >= best) break;
+    const double z_in = z0 + slope * span.s_in;
+    if (z_in >= span.z_lo && z_in <= span.z_hi) {  // its side, and nothing later can be nearer
+      *hit = ColumnHit{span.s_in, Eigen::Vector3d(span.side_normal.x(), span.side_normal.y(), 0.0), span.solid};
+      return true;
+    }
+    // Over (or under) it at its near side: the ray may still come down on its top.
+    const double z_face = slope < 0 && z_in > span.z_hi ? span.z_hi : (slope > 0 && z_in < span.z_lo ? span.z_lo : NAN);
+    if (std::isnan(z_face)) continue;
+    const double s_face = (z_face - z0) / slope;
+    if (s_face <= span.s_out && s_face < best) {
+      best = s_face;
+      *hit = ColumnHit{s_face, Eigen::Vector3d(0, 0, z_face == span.z_hi ? 1.0 : -1.0), span.solid};
+      found = true;
+    }
+  }
+  if (slope < 0 && z0 > 0) {
+    const double s_floor = -z0 / slope;
+    if (s_floor < best) {
+      *hit = ColumnHit{s_floor, Eigen::Vector3d::UnitZ(), -1};
+      found = true;
+    }
+  }
+  return found;
+}
+
+Color floor_color(const Eigen::Vector3d& p) {
+  const bool dark = (static_cast<long>(std::floor(p.x())) + static_cast<long>(std::floor(p.y()))) & 1;
+  return dark ? Color{0.55f, 0.55f, 0.5f} : Color{0.68f, 0.68f, 0.62f};
+}
+
+}  // namespace
+
+// Both renderers work column by column: a level camera's column is one vertical plane, so the
+// solids it crosses (spans) are found once, then each pixel is resolved from them.
 void render_depth(const World& world, const CameraConfig& camera, const SensorPose& pose,
                   std::vector<float>* depth) {
   depth->resize(static_cast<size_t>(camera.width) * camera.height);
-  const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  const RayFan fan(world, pose.position, camera.depth_max * corner_norm(camera), pose.yaw, camera.hfov / 2 + 1e-3);
   const Intrinsics k(camera);
+  const double max_right = std::max(k.cx, camera.width - 1 - k.cx) / k.f;
+  const RayFan fan(world, pose.position, camera.depth_max * std::sqrt(1 + max_right * max_right), pose.yaw,
+                   camera.hfov / 2 + 1e-3);
+  std::vector<Span> spans;
   for (int u = 0; u < camera.width; ++u) {
-    // Every pixel of a column of a level camera has the same azimuth.
-    const int bin = fan.bin_of(pose.yaw + std::atan2(-(u - k.cx) / k.f, 1.0));
+    const double right = (u - k.cx) / k.f;
+    const double h = std::sqrt(1 + right * right);  // horizontal length per unit depth
+    const double azimuth = pose.yaw + std::atan2(-right, 1.0);
+    const Eigen::Vector2d dir(std::cos(azimuth), std::sin(azimuth));
+    const double max_s = camera.depth_max * h;
+    fan.column_spans(fan.bin_of(azimuth), dir, max_s, &spans);
     for (int v = 0; v < camera.height; ++v) {
-      double norm;
-      const Eigen::Vector3d dir = pixel_ray(k, c, s, u, v, &norm);
-      RayHit hit;
+      const double slope = -(v - k.cy) / k.f / h;
+      ColumnHit hit;
       float value = nan;
-      if (fan.cast_in_bin(bin, dir, camera.depth_max * norm, &hit)) {
-        const double z = hit.distance / norm;
+      if (resolve_column(spans, pose.position.z(), slope, max_s, &hit)) {
+        const double z = hit.s / h;
         if (z >= camera.depth_min && z <= camera.depth_max) value = static_cast<float>(z);
       }
       (*depth)[static_cast<size_t>(v) * camera.width + u] = value;
@@ -99,30 +135,39 @@ void render_depth(const World& world, const CameraConfig& camera, const SensorPo
 void render_rgb(const World& world, const CameraConfig& camera, const SensorPose& pose,
                 std::vector<std::uint8_t>* rgb) {
   rgb->resize(static_cast<size_t>(camera.width) * camera.height * 3);
-  const double c = std::cos(pose.yaw), s = std::sin(pose.yaw);
   const Eigen::Vector3d light = Eigen::Vector3d(0.4, 0.25, 0.88).normalized();
   const double view_distance = 30.0;
+  const Intrinsics k(camera);
   const RayFan fan(world, pose.position, view_distance, pose.yaw, camera.hfov / 2 + 1e-3);
-  const Intrinsics intrinsics(camera);
+  const auto& solids = world.solids();
+  std::vector<Span> spans;
   for (int u = 0; u < camera.width; ++u) {
-    const int bin = fan.bin_of(pose.yaw + std::atan2(-(u - intrinsics.cx) / intrinsics.f, 1.0));
+    const double right = (u - k.cx) / k.f;
+    const double h = std::sqrt(1 + right * right);
+    const double azimuth = pose.yaw + std::atan2(-right, 1.0);
+    const Eigen::Vector2d dir(std::cos(azimuth), std::sin(azimuth));
+    fan.column_spans(fan.bin_of(azimuth), dir, view_distance, &spans);
     for (int v = 0; v < camera.height; ++v) {
-      const size_t k = (static_cast<size_t>(v) * camera.width + u) * 3;
-      double norm;
-      const Eigen::Vector3d dir = pixel_ray(intrinsics, c, s, u, v, &norm);
-      RayHit hit;
+      const size_t i = (static_cast<size_t>(v) * camera.width + u) * 3;
+      const double down = (v - k.cy) / k.f;
+      const double slope = -down / h;
       double r = 0.72, g = 0.82, b = 0.95;  // sky
-      if (fan.cast_in_bin(bin, dir, view_distance, &hit)) {
+      ColumnHit hit;
+      if (resolve_column(spans, pose.position.z(), slope, view_distance, &hit)) {
+        const Eigen::Vector3d p(pose.position.x() + hit.s * dir.x(), pose.position.y() + hit.s * dir.y(),
+                                pose.position.z() + slope * hit.s);
+        const Color color = hit.solid < 0 ? floor_color(p) : solids[static_cast<size_t>(hit.solid)].color;
+        const double distance = hit.s * std::sqrt(1 + slope * slope);
         // Lambert with both sides lit a little, plus a slight fade with distance.
         const double shade = 0.45 + 0.55 * std::abs(hit.normal.dot(light));
-        const double fade = 1.0 / (1.0 + 0.02 * hit.distance);
-        r = hit.color.r * shade * fade;
-        g = hit.color.g * shade * fade;
-        b = hit.color.b * shade * fade;
+        const double fade = 1.0 / (1.0 + 0.02 * distance);
+        r = color.r * shade * fade;
+        g = color.g * shade * fade;
+        b = color.b * shade * fade;
       }
-      (*rgb)[k] = static_cast<std::uint8_t>(std::clamp(r, 0.0, 1.0) * 255.0 + 0.5);
-      (*rgb)[k + 1] = static_cast<std::uint8_t>(std::clamp(g, 0.0, 1.0) * 255.0 + 0.5);
-      (*rgb)[k + 2] = static_cast<std::uint8_t>(std::clamp(b, 0.0, 1.0) * 255.0 + 0.5);
+      (*rgb)[i] = static_cast<std::uint8_t>(std::clamp(r, 0.0, 1.0) * 255.0 + 0.5);
+      (*rgb)[i + 1] = static_cast<std::uint8_t>(std::clamp(g, 0.0, 1.0) * 255.0 + 0.5);
+      (*rgb)[i + 2] = static_cast<std::uint8_t>(std::clamp(b, 0.0, 1.0) * 255.0 + 0.5);
     }
   }
 }

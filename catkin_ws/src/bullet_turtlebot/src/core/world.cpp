@@ -432,6 +432,66 @@ int RayFan::bin_of(double azimuth) const {
   return static_cast<int>(std::floor(a / bin_width_));
 }
 
+void RayFan::column_spans(int bin, const Eigen::Vector2d& dir, double max_s, std::vector<Span>* spans) const {
+  spans->clear();
+  if (bin < 0 || bin >= static_cast<int>(bins_.size())) return;
+  const auto& solids = world_.solids();
+  for (const Entry& e : bins_[static_cast<size_t>(bin)]) {
+    if (e.min_distance > max_s) break;
+    const Solid& sol = solids[static_cast<size_t>(e.solid)];
+    const double ox = origin_.x() - sol.center.x(), oy = origin_.y() - sol.center.y();
+    Span span;
+    span.solid = e.solid;
+    span.z_lo = sol.center.z() - sol.half.z();
+    span.z_hi = sol.center.z() + sol.half.z();
+    if (sol.kind == Solid::kCylinder) {
+      const double r = sol.half.x();
+      const double b = ox * dir.x() + oy * dir.y();
+      const double c = ox * ox + oy * oy - r * r;
+      const double disc = b * b - c;
+      if (disc < 0) continue;
+      const double root = std::sqrt(disc);
+      span.s_in = -b - root;
+      span.s_out = -b + root;
+      if (span.s_out < 0) continue;
+      if (span.s_in < 0) continue;  // origin inside the footprint: treated as a miss, like raycast
+      span.side_normal = Eigen::Vector2d((ox + span.s_in * dir.x()) / r, (oy + span.s_in * dir.y()) / r);
+    } else {
+      const double c = sol.cos_yaw, sn = sol.sin_yaw;
+      const double o[2] = {c * ox + sn * oy, -sn * ox + c * oy};
+      const double d[2] = {c * dir.x() + sn * dir.y(), -sn * dir.x() + c * dir.y()};
+      double enter = -std::numeric_limits<double>::infinity(), exit = std::numeric_limits<double>::infinity();
+      int axis = -1;
+      double sign = 0.0;
+      bool miss = false;
+      for (int i = 0; i < 2 && !miss; ++i) {
+        const double h = sol.half[i];
+        if (std::abs(d[i]) < 1e-12) {
+          miss = o[i] < -h || o[i] > h;
+          continue;
+        }
+        double t1 = (-h - o[i]) / d[i], t2 = (h - o[i]) / d[i];
+        if (t1 > t2) std::swap(t1, t2);
+        if (t1 > enter) {
+          enter = t1;
+          axis = i;
+          sign = d[i] > 0 ? -1.0 : 1.0;
+        }
+        exit = std::min(exit, t2);
+        miss = enter > exit;
+      }
+      if (miss || axis < 0 || enter < 0) continue;
+      span.s_in = enter;
+      span.s_out = exit;
+      const Eigen::Vector2d local = axis == 0 ? Eigen::Vector2d(sign, 0) : Eigen::Vector2d(0, sign);
+      span.side_normal = Eigen::Vector2d(c * local.x() - sn * local.y(), sn * local.x() + c * local.y());
+    }
+    if (span.s_in > max_s) continue;
+    spans->push_back(span);
+  }
+  std::sort(spans->begin(), spans->end(), [](const Span& a, const Span& b) { return a.s_in < b.s_in; });
+}
+
 bool RayFan::cast(const Eigen::Vector3d& dir, double max_distance, RayHit* hit, bool include_floor) const {
   return cast_in_bin(bin_of(std::atan2(dir.y(), dir.x())), dir, max_distance, hit, include_floor);
 }
