@@ -85,7 +85,7 @@ def test_keyboard_teleop_prints_help_ramps_while_held_and_stops_when_released(ro
         "   m    ,    .",
         "space key, k : force stop",
         "anything else : stop smoothly",
-        "currently:\tspeed 0.2\tturn 1.0",
+        "currently:\tspeed 0.2\tturn 1",
     ):
         assert line in out
     probe = ros.probe(["cmd_vel"], duration=60)

@@ -50,7 +50,8 @@ QUIT_KEYS = ("\x03", "\x04")  # Ctrl-C, Ctrl-D when the terminal is in raw mode
 
 
 def status_line(speed, turn):
-    return "currently:\tspeed %s\tturn %s " % (round(speed, 4), round(turn, 4))
+    # %g prints the start values as the book shows them: "speed 0.2 turn 1"
+    return "currently:\tspeed %.4g\tturn %.4g " % (speed, turn)
 
 
 def approach(current, target, max_step):
