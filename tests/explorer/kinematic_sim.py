@@ -207,6 +207,7 @@ def explore(
                 explorer.excluded_points(now),
                 explorer.current_goal,
                 explorer.pending_views(map_stamp),
+                explorer.excluded_frontiers(now),
             )
             explorer.accept_plan(plan, now, map_stamp)
         linear, angular = explorer.control(now, x, y, yaw, ahead)

@@ -47,7 +47,7 @@ def read_params():
         reach_max=param("reach_max", 1.2),
         info_weight=param("info_weight", 0.3, non_negative),
         switch_margin=param("switch_margin", 1.0, non_negative),
-        blacklist_radius=param("blacklist_radius", 0.5),
+        blacklist_radius=param("blacklist_radius", 0.8),
     )
     if planner.inflation_radius < planner.robot_radius:
         raise ParamError("~inflation_radius must be >= ~robot_radius")
@@ -230,12 +230,15 @@ class ExplorerNode:
                 excluded = self.explorer.excluded_points(now)
                 goal = self.explorer.current_goal
                 views = self.explorer.pending_views(stamp)
+                dead = self.explorer.excluded_frontiers(now)
                 x, y, _ = self.pose
             started = time.monotonic()
             if stamp != self.prepared_stamp:
                 self.planner.set_map(raw.data, raw.resolution, raw.origin[0], raw.origin[1])
                 self.prepared_stamp = stamp
-            plan = self.planner.plan(x, y, excluded, current_goal=goal, views=views)
+            plan = self.planner.plan(
+                x, y, excluded, current_goal=goal, views=views, dead_frontiers=dead
+            )
             rospy.logdebug(f"explorer: planned in {time.monotonic() - started:.3f} s wall")
             with self.lock:
                 self.explorer.accept_plan(plan, rospy.get_time(), stamp)

@@ -30,15 +30,17 @@ class ExplorerParams:
     goal_timeout_factor: float = 3.0  # give up a goal after this x its expected time
     goal_timeout_min: float = 20.0  # s
     done_after: int = 2  # consecutive plans without a frontier before declaring done
-    max_visits: int = 3  # reaching the same goal this often (in blacklist_timeout) blacklists it
+    max_visits: int = 2  # looking at the same frontier this often (in blacklist_timeout) drops it
 
 
 class Explorer:
-    def __init__(self, params=None, follower=None, recovery=None, blacklist_radius=0.5):
+    def __init__(self, params=None, follower=None, recovery=None, blacklist_radius=0.8):
         self.params = params or ExplorerParams()
         self.follower_params = follower or FollowerParams()
         self.recovery_params = recovery or RecoveryParams()
         self.blacklist = Blacklist(blacklist_radius, self.params.blacklist_timeout)
+        # Frontiers looked at again and again in vain (too low, occluded): ignored a while.
+        self.dead_frontiers = Blacklist(blacklist_radius, self.params.blacklist_timeout)
         self.stuck = StuckMonitor()
         self.state = SPIN
         self.spun = 0.0
@@ -82,6 +84,9 @@ class Explorer:
 
     def excluded_points(self, now):
         return self.blacklist.active(now)
+
+    def excluded_frontiers(self, now):
+        return self.dead_frontiers.active(now)
 
     def pending_views(self, map_stamp):
         """Views (x, y, yaw) taken after the map was made: the map does not show them."""
@@ -178,18 +183,21 @@ class Explorer:
 
     def _arrived(self, now):
         gx, gy = self.plan.goal
+        tx, ty = self.plan.target
         self.goals_reached += 1
         self.events.append(f"reached goal ({gx:.2f}, {gy:.2f})")
         timeout = self.params.blacklist_timeout
         self.reached = [r for r in self.reached if now - r[2] < timeout]
-        radius = self.blacklist.radius
-        visits = sum(math.hypot(rx - gx, ry - gy) < radius for rx, ry, _ in self.reached)
+        radius = self.dead_frontiers.radius
+        visits = sum(math.hypot(rx - tx, ry - ty) < radius for rx, ry, _ in self.reached)
         if visits >= self.params.max_visits - 1:
-            # Back again where we already looked, and a frontier is still in sight: it
-            # cannot be mapped from here (too low, too close, too far): stop coming back.
-            self.events.append(f"goal ({gx:.2f}, {gy:.2f}) reached {visits + 1} times: blacklisted")
-            self.blacklist.add(gx, gy, now)
-        self.reached.append((gx, gy, now))
+            # Looked at this part of a frontier before, and it is still there: it cannot
+            # be mapped from where we can go (too low, occluded, too far).
+            self.events.append(
+                f"frontier at ({tx:.2f}, {ty:.2f}) looked at {visits + 1} times: ignored"
+            )
+            self.dead_frontiers.add(tx, ty, now)
+        self.reached.append((tx, ty, now))
 
     def _request_plan(self, state):
         self.state = state

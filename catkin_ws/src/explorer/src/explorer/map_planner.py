@@ -23,14 +23,14 @@ class PlannerParams:
     reach_min: float = 0.6  # m: observe a frontier from at least this far (sensor minimum)
     reach_max: float = 2.5  # m: and at most this far, in a straight line through free space
     info_radius: float = 3.0  # m: unknown space this deep behind a frontier counts as gain
-    min_gain: float = 0.2  # m^2: frontiers opening onto less unknown space are ignored
+    min_gain: float = 1.0  # m^2: frontiers opening onto less unknown space are ignored
     info_weight: float = 0.5  # score bonus (m of path) per m^2 of gain
     info_cap: float = 15.0  # m^2: gain beyond this earns no more bonus
     view_range: float = 4.0  # m: frontier cells this near a view count as seen
     view_half_angle: float = 0.45  # rad: within this bearing of a view's heading
     look_wiggle: float = 0.5  # rad: turn at least this much while looking at a frontier
     switch_margin: float = 1.0  # m: keep the current goal unless another scores this much better
-    blacklist_radius: float = 0.5  # m
+    blacklist_radius: float = 0.8  # m
     free_threshold: int = 25
     occupied_threshold: int = 65
 
@@ -45,6 +45,7 @@ class Plan:
     gain: float  # m^2 of unknown space behind the frontier
     frontiers_left: int
     kept: bool = False  # the previous goal was kept
+    target: tuple = (0.0, 0.0)  # (x, y): middle of the frontier cells seen from the goal
 
 
 @dataclass
@@ -106,7 +107,7 @@ class MapPlanner:
             mask |= (xs - x) ** 2 + (ys - y) ** 2 <= r2
         return mask
 
-    def plan(self, x, y, excluded_points=(), current_goal=None, views=()):
+    def plan(self, x, y, excluded_points=(), current_goal=None, views=(), dead_frontiers=()):
         """Plan from (x, y) to the best frontier; None if no frontier is reachable.
 
         `excluded_points`: blacklisted goals (x, y). `current_goal` (x, y): keep it while
@@ -119,6 +120,7 @@ class MapPlanner:
         p = self.params
         g = prep.geometry
         labels, frontiers = self._unseen(prep.labels, prep.frontiers, views)
+        labels, frontiers = self._without(labels, frontiers, dead_frontiers)
         if not frontiers:
             return None
         start = tuple(int(v) for v in g.to_cell(x, y))
@@ -153,6 +155,7 @@ class MapPlanner:
         xs, ys = g.to_world(cells[:, 0], cells[:, 1])
         path = np.vstack([[x, y], np.column_stack([xs, ys])])
         gx, gy = g.to_world(*best.cell)
+        tx, ty = g.to_world(best.seen[:, 0].mean(), best.seen[:, 1].mean())
         return Plan(
             (float(gx), float(gy)),
             path,
@@ -162,6 +165,7 @@ class MapPlanner:
             best.gain,
             len(frontiers),
             kept,
+            (float(tx), float(ty)),
         )
 
     def _unseen(self, labels, frontiers, views):
@@ -189,6 +193,23 @@ class MapPlanner:
             return labels, frontiers
         labels = labels.copy()
         labels[rows[seen], cols[seen]] = 0
+        left = set(np.unique(labels[labels > 0]).tolist())
+        return labels, [f for f in frontiers if f.label in left]
+
+    def _without(self, labels, frontiers, points):
+        """Labels and frontiers without the cells near `points` (x, y)."""
+        if not len(points) or not frontiers:
+            return labels, frontiers
+        g = self.prepared.geometry
+        rows, cols = np.nonzero(labels)
+        xs, ys = g.to_world(rows, cols)
+        dead = np.zeros(rows.shape, dtype=bool)
+        for px, py in points:
+            dead |= np.hypot(xs - px, ys - py) <= self.params.blacklist_radius
+        if not dead.any():
+            return labels, frontiers
+        labels = labels.copy()
+        labels[rows[dead], cols[dead]] = 0
         left = set(np.unique(labels[labels > 0]).tolist())
         return labels, [f for f in frontiers if f.label in left]
 
