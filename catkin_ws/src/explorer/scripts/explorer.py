@@ -7,6 +7,7 @@ robot pose from tf `~map_frame` -> `~base_frame`; publishes `cmd_vel` (geometry_
 latched). See the package README for the parameters.
 """
 
+import dataclasses
 import math
 import os
 import sys
@@ -36,33 +37,30 @@ def param(name, default, check=positive):
     return check("~" + name, rospy.get_param("~" + name, default))
 
 
+def from_params(cls, positive_fields=(), **fixed):
+    """An instance of the dataclass `cls` with every field read from the private
+    parameter of the same name (default: the dataclass default)."""
+    values = {}
+    for field in dataclasses.fields(cls):
+        if field.name in fixed:
+            continue
+        default = field.default
+        check = positive if field.name in positive_fields else non_negative
+        value = param(field.name, default, check)
+        values[field.name] = int(value) if isinstance(default, int) else value
+    return cls(**values, **fixed)
+
+
 def read_params():
-    planner = PlannerParams(
-        plan_resolution=param("plan_resolution", 0.10),
-        robot_radius=param("robot_radius", 0.18),
-        inflation_radius=param("inflation_radius", 0.30),
-        cost_scale=param("cost_scale", 3.0, non_negative),
-        min_frontier_size=param("min_frontier_size", 0.3, non_negative),
-        reach_min=param("reach_min", 0.4, non_negative),
-        reach_max=param("reach_max", 1.2),
-        info_weight=param("info_weight", 0.3, non_negative),
-        switch_margin=param("switch_margin", 1.0, non_negative),
-        blacklist_radius=param("blacklist_radius", 0.8),
+    planner = from_params(
+        PlannerParams,
+        ("plan_resolution", "robot_radius", "inflation_radius", "reach_max", "blacklist_radius"),
     )
     if planner.inflation_radius < planner.robot_radius:
         raise ParamError("~inflation_radius must be >= ~robot_radius")
-    follower = FollowerParams(
-        max_linear=param("max_linear", 0.35),
-        max_angular=param("max_angular", 1.0),
-        lookahead=param("lookahead", 0.5),
-        goal_tolerance=param("goal_tolerance", 0.25),
-    )
-    explorer = ExplorerParams(
-        replan_period=param("replan_period", 3.0),
-        stop_distance=param("stop_distance", 0.40),
-        blacklist_timeout=param("blacklist_timeout", 60.0),
-        spin_speed=min(param("spin_speed", 0.8), follower.max_angular),
-    )
+    follower = from_params(FollowerParams, ("max_linear", "max_angular", "lookahead"))
+    explorer = from_params(ExplorerParams, ("replan_period", "spin_speed"))
+    explorer.spin_speed = min(explorer.spin_speed, follower.max_angular)
     recovery = RecoveryParams(turn_speed=min(0.8, follower.max_angular))
     return planner, follower, explorer, recovery
 

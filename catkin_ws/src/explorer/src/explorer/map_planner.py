@@ -24,7 +24,7 @@ class PlannerParams:
     reach_max: float = 2.5  # m: and at most this far, in a straight line through free space
     info_radius: float = 3.0  # m: unknown space this deep behind a frontier counts as gain
     min_gain: float = 1.0  # m^2: frontiers opening onto less unknown space are ignored
-    info_weight: float = 0.5  # score bonus (m of path) per m^2 of gain
+    info_weight: float = 1.0  # score bonus (m of path) per m^2 of gain
     info_cap: float = 15.0  # m^2: gain beyond this earns no more bonus
     view_range: float = 4.0  # m: frontier cells this near a view count as seen
     view_half_angle: float = 0.45  # rad: within this bearing of a view's heading
