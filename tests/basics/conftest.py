@@ -4,6 +4,7 @@ waiting for topics, services and nodes costs almost no CPU on a loaded machine."
 import xmlrpc.client
 
 import pytest
+from roskit import RosGraph
 
 CALLER = "/basics_tests"
 
@@ -50,3 +51,23 @@ def _absolute(name):
 @pytest.fixture
 def master(ros):
     return Master(ros)
+
+
+@pytest.fixture(scope="module")
+def shared_graph(tmp_path_factory, request):
+    """One roscore for a whole test module (saves a roscore start-up per test). The module
+    names the nodes to start in SHARED_NODES and what to wait for in SHARED_TOPICS and
+    SHARED_SERVICES."""
+    module = request.module
+    graph = RosGraph(tmp_path_factory.mktemp(module.__name__.rsplit(".", 1)[-1]))
+    try:
+        for cmd in module.SHARED_NODES:
+            graph.start(cmd)
+        master = Master(graph)
+        for topic in getattr(module, "SHARED_TOPICS", ()):
+            master.wait_for_topic(topic)
+        for service in getattr(module, "SHARED_SERVICES", ()):
+            master.wait_for_service(service)
+        yield graph
+    finally:
+        graph.close()

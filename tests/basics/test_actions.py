@@ -29,15 +29,13 @@ def fancy_client(ros, *args):
     return feedback, (int(state), status, float(elapsed), int(updates))
 
 
-@pytest.fixture
-def fancy(ros, master):
-    ros.start(["rosrun", "basics", "fancy_action_server.py"])
-    master.wait_for_topic("timer/result")
-    return ros
+# The fancy server, shared by the tests that use `shared_graph` (goals run one at a time).
+SHARED_NODES = [["rosrun", "basics", "fancy_action_server.py"]]
+SHARED_TOPICS = ["timer/result"]
 
 
-def test_five_second_goal_succeeds_with_five_feedbacks(fancy):
-    feedback, (state, status, elapsed, updates) = fancy_client(fancy)
+def test_five_second_goal_succeeds_with_five_feedbacks(shared_graph):
+    feedback, (state, status, elapsed, updates) = fancy_client(shared_graph)
     assert (state, status, updates) == (3, "Timer completed successfully", 5)
     assert elapsed == pytest.approx(5.0, abs=0.25)
     assert len(feedback) == 5
@@ -46,21 +44,21 @@ def test_five_second_goal_succeeds_with_five_feedbacks(fancy):
         assert e + r == pytest.approx(5.0, abs=1e-3)
 
 
-def test_cancel_after_three_seconds_preempts(fancy):
-    feedback, (state, status, elapsed, updates) = fancy_client(fancy, "--preempt-after", "3")
+def test_cancel_after_three_seconds_preempts(shared_graph):
+    feedback, (state, status, elapsed, updates) = fancy_client(shared_graph, "--preempt-after", "3")
     assert (state, status) == (2, "Timer preempted")
     assert elapsed == pytest.approx(3.0, abs=0.25)
     assert updates == 3 and len(feedback) == 3
 
 
-def test_too_long_and_negative_goals_abort_at_once(fancy):
+def test_too_long_and_negative_goals_abort_at_once(shared_graph):
     started = time.monotonic()
-    feedback, (state, status, elapsed, updates) = fancy_client(fancy, "--duration", "500")
+    feedback, (state, status, elapsed, updates) = fancy_client(shared_graph, "--duration", "500")
     assert (state, status, updates, feedback) == (4, "Timer aborted due to too-long wait", 0, [])
     assert elapsed < 0.5
     assert time.monotonic() - started < 30  # not 500 s
 
-    feedback, (state, status, _, updates) = fancy_client(fancy, "--duration", "-2")
+    feedback, (state, status, _, updates) = fancy_client(shared_graph, "--duration", "-2")
     assert (state, updates, feedback) == (4, 0, [])
     assert status == "Timer aborted due to negative wait (-2.000000 s)"
 

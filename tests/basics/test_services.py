@@ -4,6 +4,7 @@ import re
 import subprocess
 import time
 
+import pytest
 from roskit import free_port, ros_environment
 
 
@@ -12,9 +13,24 @@ def call_word_count(ros, service, words):
     return int(re.fullmatch(r"count: (\d+)\s*", done.stdout).group(1))
 
 
-def test_word_count_from_rosservice_and_service_client(ros, master):
-    ros.start(["rosrun", "basics", "service_server.py"])
-    master.wait_for_service("word_count")
+# The book's four return styles, chosen with --mode or ~mode, each server in its own
+# namespace, next to the default server; shared by the tests that use `shared_graph`.
+MODES = {
+    "response": ["--mode", "response"],
+    "value": ["--mode", "value"],
+    "list": ["_mode:=list"],
+    "tuple": ["--mode", "tuple"],
+    "dict": ["_mode:=dict"],
+}
+SHARED_NODES = [["rosrun", "basics", "service_server.py"]] + [
+    ["rosrun", "basics", "service_server.py", *args, f"__ns:={mode}"]
+    for mode, args in MODES.items()
+]
+SHARED_SERVICES = ["word_count"] + [f"/{mode}/word_count" for mode in MODES]
+
+
+def test_word_count_from_rosservice_and_service_client(shared_graph):
+    ros = shared_graph
     info = ros.run(["rosservice", "info", "word_count"]).stdout
     assert "Node: /service_server" in info
     assert "Type: basics/WordCount" in info
@@ -33,20 +49,9 @@ def test_word_count_from_rosservice_and_service_client(ros, master):
     assert done.stdout.endswith(" -> 100000\n")
 
 
-def test_every_way_of_returning_a_value(ros, master):
-    """The book's four return styles, chosen with --mode or ~mode, in their own namespaces."""
-    modes = {
-        "response": ["--mode", "response"],
-        "value": ["--mode", "value"],
-        "list": ["_mode:=list"],
-        "tuple": ["--mode", "tuple"],
-        "dict": ["_mode:=dict"],
-    }
-    for mode, args in modes.items():
-        ros.start(["rosrun", "basics", "service_server.py", *args, f"__ns:={mode}"])
-    for mode in modes:
-        master.wait_for_service(f"/{mode}/word_count")
-        assert call_word_count(ros, f"/{mode}/word_count", f"style {mode} of returning") == 4
+@pytest.mark.parametrize("mode", MODES)
+def test_every_way_of_returning_a_value(shared_graph, mode):
+    assert call_word_count(shared_graph, f"/{mode}/word_count", f"style {mode} of returning") == 4
 
 
 def test_client_waits_for_a_late_server(ros):
