@@ -23,7 +23,8 @@ def open_world(tmp_path):
 
 
 def test_drive_half_metre_per_second_for_two_seconds_moves_one_metre(ros, tmp_path):
-    start_simulator(ros, open_world(tmp_path))
+    # Real time: the driver's timing jitter (a loaded machine) then costs millimetres.
+    start_simulator(ros, open_world(tmp_path), speed=1.0)
     drive(ros, 0.5, 0.0, 2.0)
     wait_sim_seconds(ros, 1.0)
     x, y, yaw, truth = last_pose(ros)
