@@ -100,6 +100,11 @@ class ExplorerNode:
         # The map arrives raw and is decoded with numpy: rospy's int8[] tuples are slow.
         rospy.Subscriber("map", rospy.AnyMsg, self.map_callback, queue_size=1, buff_size=2**24)
         rospy.Subscriber("scan", LaserScan, self.scan_callback, queue_size=1, buff_size=2**20)
+        # Kobuki-style bumper events (uint8 bumper, uint8 state; PRESSED = 1), read raw so
+        # that kobuki_msgs and bullet_turtlebot messages both work.
+        bumper_topic = rospy.get_param("~bumper_topic", "mobile_base/events/bumper")
+        if bumper_topic:
+            rospy.Subscriber(bumper_topic, rospy.AnyMsg, self.bumper_callback, queue_size=10)
 
     # -- inputs ------------------------------------------------------------------
     def map_callback(self, msg):
@@ -134,6 +139,15 @@ class ExplorerNode:
         )
         with self.lock:
             self.clearance = (msg.header.stamp.to_sec(), clear)
+
+    def bumper_callback(self, msg):
+        data = bytes(msg._buff)
+        if len(data) != 2:
+            rospy.logwarn_throttle(30, "explorer: bumper message is not (uint8, uint8): ignored")
+            return
+        if data[1] == 1:  # PRESSED
+            with self.lock:
+                self.explorer.bumped(rospy.get_time())
 
     def sensor_offset(self, frame):
         if frame not in self.sensor_offsets:

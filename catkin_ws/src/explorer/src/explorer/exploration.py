@@ -224,12 +224,25 @@ class Explorer:
             self._request_plan(WAIT)
             return 0.0, 0.0
         if self.stuck.update(now, x, y, yaw):
-            self.recover_count += 1
-            self.events.append("stuck: backing up, turning, blacklisting the goal")
-            self.blacklist.add(*self.plan.goal, now)
-            sign = 1.0 if self.recover_count % 2 else -1.0
-            self.recovery = Recovery(now, sign, self.recovery_params)
-            self.state = RECOVER
-            self.stuck.reset()
+            self._recover(now, "stuck")
             return self.recovery.command(now)[:2]
         return linear, angular
+
+    def bumped(self, now):
+        """A bumper was pressed: back off at once (the scan misses what is very close,
+        low or beside the robot), and give up the goal that led there."""
+        if self.state in (RECOVER, DONE):
+            return
+        self._recover(now, "bumper pressed")
+
+    def _recover(self, now, why):
+        self.recover_count += 1
+        if self.plan is not None and self.state == FOLLOW:
+            self.events.append(f"{why}: backing up, turning, blacklisting the goal")
+            self.blacklist.add(*self.plan.goal, now)
+        else:
+            self.events.append(f"{why}: backing up, turning")
+        sign = 1.0 if self.recover_count % 2 else -1.0
+        self.recovery = Recovery(now, sign, self.recovery_params)
+        self.state = RECOVER
+        self.stuck.reset()
