@@ -39,6 +39,11 @@ const Cell* GridMap::find(int ix, int iy) const {
   return &(*s)->cells[offsetIn(iy) * kPatchSize + offsetIn(ix)];
 }
 
+const Cell* GridMap::patchCells(int px, int py) const {
+  const PatchPtr* s = slot(px, py);
+  return s && *s ? (*s)->cells : nullptr;
+}
+
 void GridMap::growToInclude(int px, int py) {
   if (npx_ == 0) {
     // Start with some room around the first patch so early growth is rare.

@@ -46,6 +46,10 @@ class GridMap {
 
   // Read access: nullptr when the cell was never touched.
   const Cell* find(int ix, int iy) const;
+  // The cells of patch (px, py) (row-major, kPatchSize per row), or nullptr if untouched.
+  // Patch (px, py) covers cells [px * kPatchSize, (px + 1) * kPatchSize) in x, same in y.
+  const Cell* patchCells(int px, int py) const;
+
   // Write access: allocates or un-shares the cell's patch as needed.
   Cell& edit(int ix, int iy);
 
