@@ -15,8 +15,10 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 from kinematic_sim import WORLDS  # noqa: E402
 
+# Sim speed 8 runs at a real-time factor of about 7.5-8 on a loaded 2-core machine.
 SPEED = float(os.environ.get("EXPLORER_SIM_SPEED", "8"))
-SIM_SECONDS = float(os.environ.get("EXPLORER_SIM_SECONDS", "400"))
+# Measured with gmapping_lite (seed 1): about 60% at 400 s, 80% at 600 s, 90% at 800 s.
+SIM_SECONDS = float(os.environ.get("EXPLORER_SIM_SECONDS", "800"))
 PYTHON = "/usr/bin/python3"
 
 
@@ -125,6 +127,10 @@ def test_explorer_maps_the_office_with_slam(ros, tmp_path):
 
 
 def test_explorer_maps_the_office_with_perfect_odometry(ros, tmp_path):
+    """The same without SLAM (a stand-in mapper on perfect odometry), for workspaces that
+    do not build gmapping_lite."""
+    if slam_node_available():
+        pytest.skip("gmapping_lite is built: the SLAM test covers this")
     got = run_exploration(ros, tmp_path, use_slam=False)
     last, elapsed = report(got, "office, perfect odometry")
     assert last["coverage"] >= 0.80

@@ -1,7 +1,7 @@
 import math
 
 import numpy as np
-from explorer.exploration import FOLLOW, LOOK, RECOVER, SPIN, WAIT, Explorer
+from explorer.exploration import FOLLOW, LOOK, RECOVER, SPIN, WAIT, Explorer, ExplorerParams
 from explorer.map_planner import Plan
 
 
@@ -101,3 +101,8 @@ def test_a_frontier_looked_at_twice_is_ignored():
         t += 1
     assert explorer.excluded_frontiers(t) == [(3.0, 0.0)]
     assert not explorer.done
+
+
+def test_initial_spin_can_be_skipped():
+    explorer = Explorer(ExplorerParams(initial_spin=0.0))
+    assert explorer.state == WAIT and explorer.wants_plan(0.0, 1.0)

@@ -26,6 +26,7 @@ class ExplorerParams:
     stop_distance: float = 0.40  # m from the robot centre: no forward motion closer
     slow_gain: float = 1.0  # forward speed limit per metre of clearance beyond stop_distance
     spin_speed: float = 0.8  # rad/s for the initial look around
+    initial_spin: float = 2 * math.pi  # rad to turn before the first plan (0: none)
     blacklist_timeout: float = 60.0  # s
     goal_timeout_factor: float = 3.0  # give up a goal after this x its expected time
     goal_timeout_min: float = 20.0  # s
@@ -59,6 +60,8 @@ class Explorer:
         self.views = []  # (x, y, yaw, time) where the robot looked at a frontier
         self.reached = []  # (x, y, time) of reached goals, to catch repeats
         self.look_queue = []  # headings still to turn through at the goal
+        if self.params.initial_spin <= 0:
+            self._request_plan(WAIT)
 
     # -- planning ----------------------------------------------------------------
     @property
@@ -165,7 +168,7 @@ class Explorer:
         if self.last_yaw is not None:
             self.spun += abs(wrap(yaw - self.last_yaw))
         self.last_yaw = yaw
-        if self.spun >= 2 * math.pi:
+        if self.spun >= (self.params.initial_spin or 2 * math.pi):
             self._request_plan(WAIT)
             return 0.0, 0.0
         return 0.0, self.params.spin_speed
