@@ -175,3 +175,11 @@ def test_world_to_map_writes_a_map_server_map(ros, tmp_path):
     assert pixels[row * width + col] == 0
     bad = ros.run(["rosrun", "bullet_turtlebot", "world_to_map", "no_such_world"], check=False)
     assert bad.returncode != 0 and "no_such_world.yaml': cannot open" in bad.stderr
+
+
+def test_world_without_start_and_origin_in_a_wall_starts_at_nearest_free_spot(ros, tmp_path):
+    world = write_world(tmp_path, "nostart", boxes=[(0, 0, 0, 2, 2, 1)])
+    sim = start_simulator(ros, world)
+    x, y, _, _ = last_pose(ros)
+    assert 1.18 < math.hypot(x, y) < 1.5
+    assert "nearest free position" in ros.output(sim)

@@ -84,3 +84,20 @@ TEST(Simulation, SideBumper) {
 TEST(Simulation, RejectsStartInsideObstacle) {
   EXPECT_THROW(Simulation(wall_at(1.0), quiet_config(), Pose2D{1.5, 0, 0}), std::invalid_argument);
 }
+
+TEST(Simulation, FindsTheNearestFreePosition) {
+  WorldSpec spec;
+  BoxSpec box;
+  box.size_x = box.size_y = 2.0;  // x, y in [-1, 1]
+  spec.boxes.push_back(box);
+  const World world(spec);
+  Eigen::Vector2d found;
+  ASSERT_TRUE(find_free_position(world, RobotGeometry{}, Eigen::Vector2d(0.5, 0.0), 5.0, &found));
+  EXPECT_NEAR(found.y(), 0.0, 1e-9);
+  EXPECT_GT(found.x(), 1.18);
+  EXPECT_LT(found.x(), 1.26);
+  EXPECT_FALSE(world.cylinder_collides(found, 0.18, 0.4, 0.02));
+  // Already free: stays.
+  ASSERT_TRUE(find_free_position(world, RobotGeometry{}, Eigen::Vector2d(3.0, 3.0), 5.0, &found));
+  EXPECT_EQ(found, Eigen::Vector2d(3.0, 3.0));
+}

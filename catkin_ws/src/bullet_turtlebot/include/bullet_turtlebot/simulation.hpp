@@ -39,6 +39,11 @@ struct BumperChange {
   bool pressed;
 };
 
+// The free robot position nearest to `near` (searched on a 5 cm grid, rings of growing size,
+// up to max_distance), or false when there is none.
+bool find_free_position(const World& world, const RobotGeometry& geometry, const Eigen::Vector2d& near,
+                        double max_distance, Eigen::Vector2d* found);
+
 class Simulation {
  public:
   // Throws std::invalid_argument when the start pose is inside an obstacle.

@@ -1,9 +1,41 @@
 #include "bullet_turtlebot/simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace bullet_turtlebot {
+
+bool find_free_position(const World& world, const RobotGeometry& geometry, const Eigen::Vector2d& near,
+                        double max_distance, Eigen::Vector2d* found) {
+  const double step = 0.05;
+  const int rings = static_cast<int>(std::ceil(max_distance / step));
+  auto free_at = [&](const Eigen::Vector2d& p) {
+    return !world.cylinder_collides(p, geometry.radius, geometry.height, geometry.clearance);
+  };
+  // Square rings grow in Chebyshev distance: after a first hit at Euclidean distance d, rings
+  // up to d / step may still hold a nearer free cell.
+  bool have = false;
+  double best = 0.0;
+  int last_ring = rings;
+  for (int ring = 0; ring <= last_ring; ++ring) {
+    for (int i = -ring; i <= ring; ++i) {
+      for (int j = -ring; j <= ring; ++j) {
+        if (std::max(std::abs(i), std::abs(j)) != ring) continue;
+        const Eigen::Vector2d p = near + step * Eigen::Vector2d(i, j);
+        const double d = (p - near).norm();
+        if ((!have || d < best) && free_at(p)) {
+          have = true;
+          best = d;
+          *found = p;
+          last_ring = std::min(rings, static_cast<int>(std::ceil(d / step)));
+        }
+      }
+    }
+  }
+  return have;
+}
 
 Simulation::Simulation(std::shared_ptr<const World> world, const SimulationConfig& config, const Pose2D& start)
     : world_(std::move(world)),

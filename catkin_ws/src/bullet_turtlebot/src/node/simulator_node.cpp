@@ -61,12 +61,24 @@ int main(int argc, char** argv) {
   config.step = 1.0 / rate;
 
   bt::Pose2D start = spec.has_start ? spec.start : bt::Pose2D{};
+  const bool chosen = spec.has_start || pnh.hasParam("x") || pnh.hasParam("y");
   pnh.param("x", start.x, start.x);
   pnh.param("y", start.y, start.y);
   pnh.param("yaw", start.yaw, start.yaw);
 
   try {
     auto world = std::make_shared<const bt::World>(spec);
+    const bt::RobotGeometry& g = config.geometry;
+    Eigen::Vector2d free;
+    if (!chosen && world->cylinder_collides(Eigen::Vector2d(start.x, start.y), g.radius, g.height, g.clearance) &&
+        bt::find_free_position(*world, g, Eigen::Vector2d(start.x, start.y), 20.0, &free)) {
+      // Nobody asked for this pose: a world file without `start` whose origin is in a wall.
+      ROS_WARN("world file '%s' gives no start pose and (%.2f, %.2f) is inside an obstacle: starting at the "
+               "nearest free position (%.2f, %.2f); set x:= y:= or `start:` to choose",
+               world_path.c_str(), start.x, start.y, free.x(), free.y());
+      start.x = free.x();
+      start.y = free.y();
+    }
     bt::RosSimulator simulator(nh, pnh, world, config, start, world_path);
     return simulator.run();
   } catch (const std::invalid_argument& e) {
