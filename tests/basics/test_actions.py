@@ -66,7 +66,7 @@ def test_too_long_and_negative_goals_abort_at_once(shared_graph):
 def test_timer_runs_on_sim_time(ros, master):
     """Under /use_sim_time both nodes follow /clock: a 50 s goal at 20x takes about 2.5 s."""
     ros.run(["rosparam", "set", "/use_sim_time", "true"])
-    ros.start([DEBIAN_PYTHON, str(SIM_CLOCK), "--start", "1000", "--speed", "20"])
+    ros.start([DEBIAN_PYTHON, str(SIM_CLOCK), "--start", "1000", "--step", "0.2"])
     master.wait_for_topic("clock")
     ros.start(["rosrun", "basics", "fancy_action_server.py"])
     master.wait_for_topic("timer/result")
@@ -75,8 +75,9 @@ def test_timer_runs_on_sim_time(ros, master):
     wall = time.monotonic() - started
     assert (state, updates, len(feedback)) == (3, 50, 50)
     assert elapsed == pytest.approx(50.0, abs=0.5)
+    # Once a simulated second (the clock moves in 0.2 s steps).
     assert [round(e) for e, _ in feedback] == list(range(50))
-    assert wall < 30, f"{wall:.1f} s of wall time for 50 s of sim time: /clock not followed"
+    assert wall < 45, f"{wall:.1f} s of wall time for 50 s of sim time: /clock not followed"
 
 
 def test_simple_client_waits_for_the_server_then_gets_five_seconds(ros):
