@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Test tool: a 4 m x 2 m walled room whose east half is unknown, as a latched `map`;
+"""Test tool: a 4 m x 2 m walled room whose east half is unknown (`_unknown_half:=false`:
+all known), as a latched `map`;
 tf map -> odom -> base_footprint -> camera_depth_frame (robot at (0.5, 1.0) facing east);
 and a `scan` (10 Hz, nothing in range). Wall-clock time."""
 
@@ -14,14 +15,14 @@ from sensor_msgs.msg import LaserScan
 RES = 0.05
 
 
-def room():
+def room(unknown_half=True):
     width, height = 80, 40  # 4 m x 2 m
     data = []
     for row in range(height):
         for col in range(width):
             if row in (0, height - 1) or col in (0, width - 1):
                 data.append(100)
-            elif col >= width // 2:
+            elif unknown_half and col >= width // 2:
                 data.append(-1)
             else:
                 data.append(0)
@@ -51,7 +52,7 @@ def main():
     grid.header.frame_id = "map"
     grid.header.stamp = rospy.Time.now()
     grid.info.resolution = RES
-    grid.info.width, grid.info.height, grid.data = room()
+    grid.info.width, grid.info.height, grid.data = room(rospy.get_param("~unknown_half", True))
     grid.info.origin.orientation.w = 1.0
     pub = rospy.Publisher("map", OccupancyGrid, queue_size=1, latch=True)
     pub.publish(grid)

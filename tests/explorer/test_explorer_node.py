@@ -38,3 +38,15 @@ def test_goal_path_and_done_on_a_small_room(ros):
     done = ros.echo("explorer/done", count=1)[0]["msg"]
     assert done["data"] is False
     assert "explorer" in ros.output(node)
+
+
+def test_done_when_nothing_is_left_to_explore(ros):
+    ros.run(["rosparam", "set", "/use_sim_time", "false"])
+    ros.start([PYTHON, str(HERE / "fake_world.py"), "_unknown_half:=false"], name="fake_world")
+    ros.wait_for_topic("map", timeout=60)
+    node = ros.start(
+        ["rosrun", "explorer", "explorer.py", "cmd_vel:=navi", "_initial_spin:=0"], name="explorer"
+    )
+    ros.wait_for(lambda: "exploration done" in ros.output(node), 60, "exploration done")
+    done = ros.echo("explorer/done", count=1)[0]["msg"]  # latched
+    assert done["data"] is True
