@@ -36,6 +36,7 @@ const std::vector<ParamEntry>& paramTable() {
       entry("ymin", &SlamParams::ymin),
       entry("xmax", &SlamParams::xmax),
       entry("ymax", &SlamParams::ymax),
+      entry("seed", &SlamParams::seed),  // not gmapping's: makes runs reproducible
       matcher("sigma", &MatcherParams::sigma),
       matcher("kernelSize", &MatcherParams::kernel_size),
       matcher("lstep", &MatcherParams::lstep),

@@ -48,15 +48,12 @@ class SlamGmappingNode {
     private_.param("transform_publish_period", transform_publish_period_, 0.05);
     private_.param("tf_wait", tf_wait_, 0.5);  // wall seconds to wait for odometry tf
     private_.param("tilt_tolerance", tilt_tolerance_, 0.1);
-    int seed = 42;
-    private_.param("seed", seed, 42);
     for (const auto& e : paramTable()) {
       double value;
       if (private_.getParam(e.name, value)) e.set(&params_, value);
     }
     max_range_set_ = private_.hasParam("maxRange");
     max_urange_set_ = private_.hasParam("maxUrange");
-    params_.seed = static_cast<unsigned>(seed);
     if (throttle_scans_ < 1) throttle_scans_ = 1;
 
     map_pub_ = node_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);

@@ -1,0 +1,80 @@
+"""slam_gmapping live on the simulator (office world, drifting odometry): the book's
+chapter 9 set-up end to end. The robot drives a short corridor route; the SLAM pose
+(map -> odom composed with odometry) must end near the true pose."""
+
+import math
+
+TURTLEBOT = {
+    "base_frame": "base_footprint",
+    "maxUrange": 6.0,
+    "minimumScore": 200,
+    "srr": 0.01,
+    "srt": 0.02,
+    "str": 0.01,
+    "stt": 0.02,
+    "linearUpdate": 0.5,
+    "angularUpdate": 0.436,
+    "map_update_interval": 2.0,
+    "xmin": -10,
+    "xmax": 10,
+    "ymin": -10,
+    "ymax": 10,
+}
+
+
+def yaw(q):
+    return math.atan2(2 * (q["w"] * q["z"] + q["x"] * q["y"]), 1 - 2 * (q["y"] ** 2 + q["z"] ** 2))
+
+
+def compose(a, b):
+    c, s = math.cos(a[2]), math.sin(a[2])
+    return (a[0] + c * b[0] - s * b[1], a[1] + s * b[0] + c * b[1], a[2] + b[2])
+
+
+def latest(transforms, parent, child):
+    found = [
+        t
+        for m in transforms
+        for t in m["msg"]["transforms"]
+        if t["header"]["frame_id"] == parent and t["child_frame_id"] == child
+    ]
+    assert found, f"no {parent} -> {child} transform"
+    t = found[-1]["transform"]
+    return (t["translation"]["x"], t["translation"]["y"], yaw(t["rotation"]))
+
+
+def test_live_mapping_in_the_office_tracks_the_true_pose(ros):
+    ros.start(
+        ["roslaunch", "bullet_turtlebot", "simulator.launch", "world:=office", "speed:=2"],
+        name="simulator",
+    )
+    ros.wait_for_topic("scan", timeout=60)
+    for name, value in TURTLEBOT.items():
+        ros.run(["rosparam", "set", f"/slam_gmapping/{name}", str(value)])
+    slam = ros.start(["rosrun", "gmapping_lite", "slam_gmapping"], name="slam_gmapping")
+    ros.wait_for_topic("map", timeout=60)
+    start = ros.echo("base_pose_ground_truth")[0]["msg"]["pose"]["pose"]
+    driver = ros.start(
+        ["rosrun", "gmapping_lite", "waypoint_driver", "--route", "corridor"], name="driver"
+    )
+    driver.wait(timeout=300)
+    assert driver.returncode == 0, ros.output(driver)
+    # Let the robot stop and the last scans be processed.
+    tf = ros.probe(["/tf"], duration=4, timeout=30)
+    transforms = tf.wait(40)
+    truth = ros.echo("base_pose_ground_truth")[0]["msg"]["pose"]["pose"]
+    map_to_odom = latest(transforms, "map", "odom")
+    odom_to_base = latest(transforms, "odom", "base_footprint")
+    slam_pose = compose(map_to_odom, odom_to_base)
+    # The map frame starts at the robot's start pose (odometry's origin): compare there.
+    s0 = (start["position"]["x"], start["position"]["y"], yaw(start["orientation"]))
+    c, s = math.cos(s0[2]), math.sin(s0[2])
+    dx, dy = truth["position"]["x"] - s0[0], truth["position"]["y"] - s0[1]
+    true_rel = (c * dx + s * dy, -s * dx + c * dy)
+    error = math.hypot(slam_pose[0] - true_rel[0], slam_pose[1] - true_rel[1])
+    assert error < 0.15, (slam_pose, true_rel)
+    grid = ros.echo("map")[0]["msg"]
+    assert grid["header"]["frame_id"] == "map"
+    assert 100 in grid["data"] and 0 in grid["data"]
+    log = ros.output(slam)
+    assert "slam_gmapping: update 5 " in log
