@@ -151,7 +151,7 @@ class RunResult:
     coverage: float  # share of the reachable free area known
     sim_time: float
     travelled: float
-    collisions: int  # control steps the robot's footprint touched an obstacle
+    collisions: int  # control steps (dt) the robot pushed against an obstacle (bumper)
     done: bool
     goals: int
     coverage_at: dict  # sim seconds -> coverage
@@ -215,7 +215,9 @@ def explore(
         ny = y + linear * math.sin(yaw) * dt
         row, col = world.cell(nx, ny)
         if clearance_grid[row, col] < robot_radius:
-            collisions += 1  # the bumper: the base does not move into the wall
+            # The bumper: the base does not move into the wall, and the explorer hears it.
+            collisions += 1
+            explorer.bumped(now)
         else:
             travelled += math.hypot(nx - x, ny - y)
             x, y = nx, ny

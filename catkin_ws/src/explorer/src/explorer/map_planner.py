@@ -9,14 +9,15 @@ import numpy as np
 from .costmap import inflate
 from .frontiers import find_frontiers, information_gain
 from .grid import FREE, GridGeometry, classify, downsample, known_window
-from .planner import choose_goal, distance_field, extract_path
+from .planner import approach_labels, choose_goal, distance_field, extract_path
 from .visibility import line_of_sight, sweep_headings
 
 
 @dataclass
 class PlannerParams:
     plan_resolution: float = 0.10  # m: planning grid cell size (a multiple of the map's)
-    robot_radius: float = 0.18  # m: cells nearer an obstacle are lethal
+    robot_radius: float = 0.18  # m: the robot's footprint
+    safety_margin: float = 0.05  # m: cells nearer than robot_radius + this are lethal
     inflation_radius: float = 0.30  # m: cost falls to zero this far from obstacles
     cost_scale: float = 3.0  # extra cost per metre at the lethal radius
     min_frontier_size: float = 0.3  # m: smaller frontiers are ignored
@@ -55,6 +56,7 @@ class PreparedMap:
     costmap: object
     labels: np.ndarray
     frontiers: list = field(default_factory=list)
+    near: np.ndarray = None  # approach_labels of all frontiers (once per map)
 
 
 class MapPlanner:
@@ -78,7 +80,11 @@ class MapPlanner:
         coarse = downsample(classes[r0:r1, c0:c1], factor)
         geometry = full.sub(r0, c0, coarse.shape[0], coarse.shape[1], factor)
         costmap = inflate(
-            coarse, geometry.resolution, p.robot_radius, p.inflation_radius, p.cost_scale
+            coarse,
+            geometry.resolution,
+            p.robot_radius + p.safety_margin,
+            max(p.inflation_radius, p.robot_radius + p.safety_margin),
+            p.cost_scale,
         )
         min_cells = max(1, int(math.ceil(p.min_frontier_size / geometry.resolution)))
         labels, frontiers = find_frontiers(coarse, min_cells)
@@ -88,7 +94,8 @@ class MapPlanner:
         if dropped:
             labels[np.isin(labels, dropped)] = 0
             frontiers = [f for f in frontiers if f.label not in dropped]
-        self.prepared = PreparedMap(geometry, coarse, costmap, labels, frontiers)
+        near = approach_labels(labels, coarse, geometry.resolution, p.reach_max)
+        self.prepared = PreparedMap(geometry, coarse, costmap, labels, frontiers, near)
         return True
 
     @property
@@ -141,6 +148,7 @@ class MapPlanner:
                 info_weight=p.info_weight,
                 info_cap=p.info_cap,
                 excluded=mask,
+                near=prep.near,
             )
 
         best = choose(excluded)

@@ -136,6 +136,7 @@ def choose_goal(
     info_cap=8.0,
     excluded=None,
     tries=40,
+    near=None,
 ):
     """Pick the best frontier and the cell to observe it from.
 
@@ -143,11 +144,13 @@ def choose_goal(
     space behind the frontier). The goal cell is the cheapest reachable cell that sees
     some of the frontier's cells in a straight line through free space at a distance
     within `reach` (metres). `excluded` masks cells that must not be goals (blacklist).
-    Returns None when no frontier can be observed from a reachable cell."""
+    Returns None when no frontier can be observed from a reachable cell. `near`: the
+    labels spread through free space (spread_labels) if already computed for this map;
+    labels of frontiers not in `frontiers` are skipped."""
     if not frontiers:
         return None
-    max_steps = max(1, int(np.ceil(reach[1] / resolution)))
-    near, _ = spread_labels(labels, classes == FREE, max_steps)
+    if near is None:
+        near = approach_labels(labels, classes, resolution, reach[1])
     candidate = (near > 0) & np.isfinite(field.distance)
     if excluded is not None:
         candidate &= ~excluded
@@ -196,6 +199,13 @@ def choose_goal(
                 )
                 break
     return best
+
+
+def approach_labels(labels, classes, resolution, reach):
+    """Each free cell within `reach` metres (through free space) of a frontier, labelled
+    with that frontier: where the robot might observe it from."""
+    steps = max(1, int(np.ceil(reach / resolution)))
+    return spread_labels(labels, classes == FREE, steps)[0]
 
 
 def _cells_by_label(labels):
