@@ -17,8 +17,8 @@ from kinematic_sim import WORLDS  # noqa: E402
 
 # Sim speed 8 runs at a real-time factor of about 7.5-8 on a loaded 2-core machine.
 SPEED = float(os.environ.get("EXPLORER_SIM_SPEED", "8"))
-# Measured with gmapping_lite (seed 1): about 60% at 400 s, 80% at 600 s, 90% at 800 s.
-SIM_SECONDS = float(os.environ.get("EXPLORER_SIM_SECONDS", "800"))
+# Measured with gmapping_lite (seed 1, speed 8): 82-87% at 400 s, 90-93% at 600 s.
+SIM_SECONDS = float(os.environ.get("EXPLORER_SIM_SECONDS", "600"))
 PYTHON = "/usr/bin/python3"
 
 
