@@ -192,15 +192,16 @@ class SlamGmappingNode {
     std_msgs::Float64 entropy;
     entropy.data = filter_->entropy();
     entropy_pub_.publish(entropy);
+    const std::string failed =
+        report.failed_matches
+            ? ", " + std::to_string(report.failed_matches) + " matches below minimumScore"
+            : "";
     ROS_INFO("slam_gmapping: update %d (scan %d, t=%.2f): best pose (%.3f, %.3f, %.3f), "
              "Neff %.1f/%d%s, match score %.0f%s",
              report.update_index, scans_received_, scan->header.stamp.toSec(),
              report.best_pose.x, report.best_pose.y, report.best_pose.theta, report.neff,
              params_.particles, report.resampled ? ", resampled" : "", report.best_score,
-             report.failed_matches ? (", " + std::to_string(report.failed_matches) +
-                                      " matches below minimumScore")
-                                         .c_str()
-                                   : "");
+             failed.c_str());
     if (!have_map_ || (scan->header.stamp - last_map_update_).toSec() >= map_update_interval_) {
       publishMap(scan->header.stamp);
       last_map_update_ = scan->header.stamp;
