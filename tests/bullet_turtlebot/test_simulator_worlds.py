@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 from simkit import last_pose, ranges, start_simulator, write_pgm, write_world
 
-WILLOW = Path("/work/shared/data/willow-full.pgm")
+WILLOW = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "willow-full.pgm"
 
 
 def run_simulator(ros, world, *extra):
