@@ -1,49 +1,20 @@
 """Ground-truth comparison for score_slam: trajectories and maps (numpy only, no ROS)."""
 
 import math
-from pathlib import Path
 
 import numpy as np
-import yaml
-
-
-def read_pgm(path):
-    data = Path(path).read_bytes()
-    fields, pos = [], 0
-    while len(fields) < 4:
-        while data[pos : pos + 1].isspace():
-            pos += 1
-        if data[pos : pos + 1] == b"#":
-            pos = data.index(b"\n", pos) + 1
-            continue
-        end = pos
-        while not data[end : end + 1].isspace():
-            end += 1
-        fields.append(data[pos:end])
-        pos = end
-    if fields[0] != b"P5":
-        raise ValueError(f"{path}: not a binary PGM (P5)")
-    width, height, maxval = (int(f) for f in fields[1:])
-    if maxval > 255:
-        raise ValueError(f"{path}: 16-bit PGM is not supported")
-    pixels = np.frombuffer(data[pos + 1 : pos + 1 + width * height], dtype=np.uint8)
-    return pixels.reshape(height, width)
+from map_server.map_io import load_map
 
 
 def load_map_yaml(path):
-    """A map_server YAML as {"resolution", "origin", "grid"}: grid rows bottom-up, -1/0/100."""
-    with open(path) as f:
-        meta = yaml.safe_load(f)
-    image = Path(path).parent / meta["image"]
-    pixels = read_pgm(image).astype(float)
-    occ = pixels / 255.0 if meta.get("negate", 0) else (255.0 - pixels) / 255.0
-    grid = np.full(occ.shape, -1, dtype=np.int16)
-    grid[occ > meta.get("occupied_thresh", 0.65)] = 100
-    grid[occ < meta.get("free_thresh", 0.196)] = 0
+    """A map_server YAML as {"resolution", "origin", "grid"}: grid rows bottom-up, -1/0/100.
+
+    map_server's own loader reads it, so scoring sees exactly what map_server serves."""
+    loaded = load_map(path)
     return {
-        "resolution": float(meta["resolution"]),
-        "origin": [float(meta["origin"][0]), float(meta["origin"][1])],
-        "grid": grid[::-1].copy(),  # image row 0 is the top
+        "resolution": loaded.resolution,
+        "origin": [loaded.origin[0], loaded.origin[1]],
+        "grid": loaded.data.astype(np.int16),
     }
 
 
