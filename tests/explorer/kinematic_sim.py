@@ -7,6 +7,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+from map_server import pgm
 from scipy import ndimage
 
 REPO = Path(__file__).resolve().parents[2]
@@ -16,24 +17,9 @@ KINECT_FOV = math.radians(58)
 
 
 def read_pgm(path):
-    """A binary PGM (P5) as a uint8 array, row 0 = top of the image."""
-    data = Path(path).read_bytes()
-    fields, pos = [], 0
-    while len(fields) < 4:
-        while data[pos : pos + 1].isspace():
-            pos += 1
-        if data[pos : pos + 1] == b"#":
-            pos = data.index(b"\n", pos) + 1
-            continue
-        end = pos
-        while not data[end : end + 1].isspace():
-            end += 1
-        fields.append(data[pos:end])
-        pos = end
-    assert fields[0] == b"P5", f"{path}: not a binary PGM"
-    width, height = int(fields[1]), int(fields[2])
-    pixels = np.frombuffer(data, dtype=np.uint8, count=width * height, offset=pos + 1)
-    return pixels.reshape(height, width)
+    """A PGM as a uint8 array, row 0 = top of the image (map_server's reader)."""
+    pixels, _ = pgm.read_pgm(path)
+    return pixels
 
 
 def read_map_yaml(path):
