@@ -68,6 +68,23 @@ def align_to_first(truth_start, odom_start):
     return compose(tuple(truth_start), inverse(tuple(odom_start)))
 
 
+def align_best_fit(poses, truth):
+    """world <- frame of (t, x, y, yaw) `poses`: the rigid motion that best fits their positions
+    onto the true ones at the same stamps (least squares, Horn's method; no scale), as the
+    standard absolute trajectory error (ATE) aligns a trajectory before measuring it."""
+    poses = np.asarray(poses)
+    inside = (poses[:, 0] >= truth[0, 0]) & (poses[:, 0] <= truth[-1, 0])
+    src = poses[inside, 1:3]
+    dst = interpolate_poses(truth, poses[inside, 0])[:, :2]
+    if len(src) < 2:
+        raise ValueError("need two poses within the ground truth's time span to align")
+    ms, md = src.mean(axis=0), dst.mean(axis=0)
+    a, b = src - ms, dst - md
+    yaw = math.atan2(np.sum(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]), np.sum(a * b))
+    c, s = math.cos(yaw), math.sin(yaw)
+    return (md[0] - (c * ms[0] - s * ms[1]), md[1] - (s * ms[0] + c * ms[1]), yaw)
+
+
 def transform_points(to_world, xy):
     c, s = math.cos(to_world[2]), math.sin(to_world[2])
     xy = np.asarray(xy, dtype=float).reshape(-1, 2)

@@ -7,8 +7,6 @@
 namespace gmapping_lite {
 
 namespace {
-constexpr float kNone = std::numeric_limits<float>::quiet_NaN();
-
 // exp(-x) for x >= 0 from a table with linear interpolation (|error| < 2e-5): scoring calls it
 // once per beam per candidate pose, and libm's exp was a fifth of the run time.
 class NegExpTable {
@@ -31,71 +29,25 @@ class NegExpTable {
 };
 
 const NegExpTable negExp;
-}  // namespace
 
-void MatchField::build(const GridMap& map, const CellIndex& min, const CellIndex& max,
-                       double fullness, double radius) {
-  const double res = map.resolution();
-  x0_ = min.x;
-  y0_ = min.y;
-  w_ = std::max(0, max.x - min.x);
-  h_ = std::max(0, max.y - min.y);
-  inv_res_ = 1.0 / res;
-  cap2_ = radius * radius;
-  const std::size_t n = static_cast<std::size_t>(w_) * h_;
-  near_x_.assign(n, kNone);
-  near_y_.assign(n, kNone);
-  queue_.clear();
-  // Seeds: occupied cells, each holding its own mean hit position. Walk the map patch by
-  // patch (one lookup per patch, not per cell).
-  const int n_patch = GridMap::kPatchSize;
-  auto floorDiv = [n_patch](int v) { return v >= 0 ? v / n_patch : -((-v + n_patch - 1) / n_patch); };
-  for (int py = floorDiv(y0_); py <= floorDiv(y0_ + h_ - 1); ++py) {
-    for (int px = floorDiv(x0_); px <= floorDiv(x0_ + w_ - 1); ++px) {
-      const Cell* cells = map.patchCells(px, py);
-      if (!cells) continue;
-      const int cx0 = std::max(px * n_patch, x0_), cx1 = std::min((px + 1) * n_patch, x0_ + w_);
-      const int cy0 = std::max(py * n_patch, y0_), cy1 = std::min((py + 1) * n_patch, y0_ + h_);
-      for (int cy = cy0; cy < cy1; ++cy) {
-        for (int cx = cx0; cx < cx1; ++cx) {
-          const Cell& c = cells[(cy - py * n_patch) * n_patch + (cx - px * n_patch)];
-          if (!c.hits || c.occupancy() <= fullness) continue;
-          const int i = cx - x0_, j = cy - y0_;
-          const std::size_t k = static_cast<std::size_t>(j) * w_ + i;
-          near_x_[k] = static_cast<float>((cx + 0.5) * res + c.sum_dx / c.hits);
-          near_y_[k] = static_cast<float>((cy + 0.5) * res + c.sum_dy / c.hits);
-          queue_.push_back(static_cast<int>(k));
-        }
-      }
-    }
-  }
-  // Brushfire: hand each cell the nearest seed of its neighbours, up to `radius`. Cells are
-  // re-queued when a nearer seed arrives, so the result is the nearest seed in practice.
-  auto dist2 = [&](int i, int j, float sx, float sy) {
-    const double ex = (x0_ + i + 0.5) * res - sx, ey = (y0_ + j + 0.5) * res - sy;
-    return ex * ex + ey * ey;
+// Solves the symmetric 3x3 system h x = g by Cramer's rule; false when singular.
+bool solve3(const double h[3][3], const double g[3], double x[3]) {
+  auto det3 = [](const double m[3][3]) {
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
   };
-  for (std::size_t q = 0; q < queue_.size(); ++q) {
-    const int k = queue_[q];
-    const int i = k % w_, j = k / w_;
-    const float sx = near_x_[k], sy = near_y_[k];
-    for (int dj = -1; dj <= 1; ++dj) {
-      const int nj = j + dj;
-      if (nj < 0 || nj >= h_) continue;
-      for (int di = -1; di <= 1; ++di) {
-        const int ni = i + di;
-        if ((!di && !dj) || ni < 0 || ni >= w_) continue;
-        const double d2 = dist2(ni, nj, sx, sy);
-        if (d2 > cap2_) continue;
-        const std::size_t nk = static_cast<std::size_t>(nj) * w_ + ni;
-        if (!std::isnan(near_x_[nk]) && dist2(ni, nj, near_x_[nk], near_y_[nk]) <= d2) continue;
-        near_x_[nk] = sx;
-        near_y_[nk] = sy;
-        queue_.push_back(static_cast<int>(nk));
-      }
-    }
+  const double d = det3(h);
+  if (!std::isfinite(d) || std::fabs(d) < 1e-18) return false;
+  for (int col = 0; col < 3; ++col) {
+    double m[3][3];
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 3; ++k) m[r][k] = k == col ? g[r] : h[r][k];
+    x[col] = det3(m) / d;
   }
+  return true;
 }
+}  // namespace
 
 ScanMatcher::ScanMatcher(const MatcherParams& params, double resolution)
     : params_(params), resolution_(resolution) {}
@@ -210,51 +162,65 @@ double ScanMatcher::optimize(const Pose2& start, const ScanPoints& scan, Pose2* 
     adelta *= 0.5;
   }
   // Keep the ICP polish only if it is better under the same odometry prior.
-  const Pose2 refined = refine(current, scan);
+  const Pose2 refined = refine(current, scan, start, prior);
   const double climbed = score(current, scan), polished = score(refined, scan);
   const bool take = polished * odometryGain(refined) >= climbed * odometryGain(current);
   *best = take ? refined : current;
   return take ? polished : climbed;
 }
 
-Pose2 ScanMatcher::refine(const Pose2& start, const ScanPoints& scan) const {
+Pose2 ScanMatcher::refine(const Pose2& start, const ScanPoints& scan, const Pose2& guess,
+                          const OdometryPrior& prior) const {
   Pose2 pose = start;
   // Pairs further apart than this are outliers (unmapped or moved things).
   const double inlier2 = std::pow(2.0 * params_.sigma, 2);
   for (int iteration = 0; iteration < 10; ++iteration) {
     const double c = std::cos(pose.theta), s = std::sin(pose.theta);
-    double n = 0, ax = 0, ay = 0, qx = 0, qy = 0;
-    std::vector<double> pairs;
-    pairs.reserve(scan.points.size() * 4);
+    // Normal equations of the residuals linearised in (dx, dy, dtheta), the rotation taken
+    // about the robot: one row per wall pairing (along the normal), two for point pairings.
+    double h[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, g[3] = {0, 0, 0};
+    int pairs = 0;
+    auto addRow = [&](double jx, double jy, double jt, double r) {
+      const double j[3] = {jx, jy, jt};
+      for (int a = 0; a < 3; ++a) {
+        g[a] += j[a] * r;
+        for (int b = 0; b < 3; ++b) h[a][b] += j[a] * j[b];
+      }
+    };
     for (const auto& p : scan.points) {
-      const double x = pose.x + c * p.hx - s * p.hy, y = pose.y + s * p.hx + c * p.hy;
-      double mx = 0.0, my = 0.0;
-      if (field_.nearest(x, y, &mx, &my) > inlier2) continue;
-      pairs.insert(pairs.end(), {x, y, mx, my});
-      ax += x;
-      ay += y;
-      qx += mx;
-      qy += my;
-      n += 1;
+      const double rx = c * p.hx - s * p.hy, ry = s * p.hx + c * p.hy;
+      const double x = pose.x + rx, y = pose.y + ry;
+      const FieldSeed* seed = field_.seedAt(x, y);
+      if (!seed || MatchField::seedDistance2(*seed, x, y) > inlier2) continue;
+      ++pairs;
+      const double ex = x - seed->mx, ey = y - seed->my;
+      if (seed->nx != 0.0f || seed->ny != 0.0f) {
+        addRow(seed->nx, seed->ny, -ry * seed->nx + rx * seed->ny, ex * seed->nx + ey * seed->ny);
+      } else {
+        addRow(1.0, 0.0, -ry, ex);
+        addRow(0.0, 1.0, rx, ey);
+      }
     }
-    if (n < 10) break;
-    ax /= n, ay /= n, qx /= n, qy /= n;
-    double sxx = 0, sxy = 0;  // cross terms of the centred pairs
-    for (std::size_t k = 0; k < pairs.size(); k += 4) {
-      const double px = pairs[k] - ax, py = pairs[k + 1] - ay;
-      const double mx = pairs[k + 2] - qx, my = pairs[k + 3] - qy;
-      sxx += px * mx + py * my;
-      sxy += px * my - py * mx;
+    if (pairs < 10) break;
+    // Residuals count in units of sigma; odometry's guess adds its own information, so a
+    // direction the scan does not constrain stays where odometry put it.
+    const double w = 1.0 / (params_.sigma * params_.sigma);
+    for (int a = 0; a < 3; ++a) {
+      g[a] *= w;
+      for (int b = 0; b < 3; ++b) h[a][b] *= w;
     }
-    const double dth = std::atan2(sxy, sxx);
-    const double cr = std::cos(dth), sr = std::sin(dth);
-    // Rotate the pose about the scan's centroid, then move that centroid onto the means'.
-    const double tx = qx - (cr * ax - sr * ay), ty = qy - (sr * ax + cr * ay);
-    const Pose2 next(cr * pose.x - sr * pose.y + tx, sr * pose.x + cr * pose.y + ty,
-                     normalizeAngle(pose.theta + dth));
-    const bool settled = std::hypot(next.x - pose.x, next.y - pose.y) < 1e-4 && std::fabs(dth) < 1e-5;
-    pose = next;
-    if (settled) break;
+    const double pxy = prior.sigma_xy > 0 ? 1.0 / (prior.sigma_xy * prior.sigma_xy) : 1e-6;
+    const double pth = prior.sigma_theta > 0 ? 1.0 / (prior.sigma_theta * prior.sigma_theta) : 1e-6;
+    h[0][0] += pxy;
+    h[1][1] += pxy;
+    h[2][2] += pth;
+    g[0] += pxy * (pose.x - guess.x);
+    g[1] += pxy * (pose.y - guess.y);
+    g[2] += pth * normalizeAngle(pose.theta - guess.theta);
+    double step[3];
+    if (!solve3(h, g, step)) break;
+    pose = Pose2(pose.x - step[0], pose.y - step[1], normalizeAngle(pose.theta - step[2]));
+    if (std::hypot(step[0], step[1]) < 1e-4 && std::fabs(step[2]) < 1e-5) break;
   }
   return pose;
 }

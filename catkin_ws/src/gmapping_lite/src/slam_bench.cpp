@@ -51,9 +51,10 @@ SlamParams defaults() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // --quick: the first row only; --only PARTICLES BEAMS: one row of the defaults.
+  // --quick: the first row only; --book: the book's settings only; --only PARTICLES BEAMS: one row of the defaults.
   const bool quick = argc > 1 && std::string(argv[1]) == "--quick";
   const bool only = argc > 3 && std::string(argv[1]) == "--only";
+  const bool book = argc > 1 && std::string(argv[1]) == "--book";
   const SyntheticWorld world = SyntheticWorld::office();
   std::vector<Row> rows;
   for (int beams : {320, 640})
@@ -76,6 +77,7 @@ int main(int argc, char** argv) {
     rows.push_back({"Turtlebot tuning (80 particles)", 80, 640, turtlebot()});
   }
   if (quick) rows.resize(1);
+  if (book) rows = {rows[4]};
   if (only) {
     SlamParams p = defaults();
     p.particles = std::atoi(argv[2]);

@@ -94,3 +94,31 @@ TEST(RegisterScan, BeyondMaxUrangeClearsWithoutHitBeyondMaxRangeIgnored) {
   EXPECT_EQ(visits(map, 31, 0), 0u);
   EXPECT_EQ(visits(map, 0, 5), 0u);
 }
+
+TEST(ScanMatcher, TurningInFrontOfAWallDoesNotSlideAlongIt) {
+  // A corridor wall and nothing else in reach: the scan fixes y and the heading, never x. The
+  // robot turns on the spot, each scan reaching past what the map holds of the wall; the
+  // match must not drag the pose along the wall towards the mapped part.
+  Fixture f;
+  f.world = SyntheticWorld(20.0, 10.0, 0.01);
+  f.world.fillRect(0.0, 6.0, 20.0, 6.2);
+  MatcherParams params;
+  params.max_range = params.max_urange = 6.0;
+  ScanMatcher matcher(params, 0.05);
+  GridMap map(0.05);
+  Pose2 pose(10.0, 5.0, M_PI / 2 - 0.5);
+  registerScan(&map, pose, f.laser, f.scanAt(pose), params.max_range, params.max_urange);
+  const OdometryPrior prior{0.12, 0.045};
+  for (int step = 0; step < 4; ++step) {
+    const Pose2 truth(10.0, 5.0, pose.theta + 0.25);
+    const Ranges ranges = f.scanAt(truth);
+    Pose2 best;
+    matcher.match(map, Pose2(pose.x, pose.y, truth.theta), matcher.matchPoints(f.laser, ranges),
+                  &best, prior);
+    EXPECT_NEAR(best.x, truth.x, 0.01) << "step " << step;
+    EXPECT_NEAR(best.y, truth.y, 0.01) << "step " << step;
+    EXPECT_NEAR(best.theta, truth.theta, 0.005) << "step " << step;
+    pose = best;
+    registerScan(&map, pose, f.laser, ranges, params.max_range, params.max_urange);
+  }
+}

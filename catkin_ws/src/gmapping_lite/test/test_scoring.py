@@ -42,6 +42,19 @@ def test_alignment_places_odometry_frame_by_the_true_start():
     assert xy[0] == pytest.approx([5.0, 2.0])
 
 
+def test_best_fit_alignment_recovers_a_rigid_motion():
+    t = np.arange(0, 20, 1.0)
+    truth = np.column_stack([t, np.cos(t / 3) * 4, np.sin(t / 2) * 3, np.zeros_like(t)])
+    # The same path seen from a frame turned by 0.3 rad and moved by (2, -1).
+    c, s = math.cos(-0.3), math.sin(-0.3)
+    x, y = truth[:, 1] - 2.0, truth[:, 2] + 1.0
+    est = np.column_stack([t, c * x - s * y, s * x + c * y, np.zeros_like(t)])
+    to_world = scoring.align_best_fit(est, truth)
+    assert to_world == pytest.approx((2.0, -1.0, 0.3))
+    rms, worst = scoring.trajectory_error(est, truth, to_world)
+    assert rms == pytest.approx(0.0, abs=1e-9)
+
+
 def test_trajectory_error_of_a_shifted_path():
     t = np.arange(0, 10, 1.0)
     truth = np.column_stack([t, t * 0.1, np.zeros_like(t), np.zeros_like(t)])

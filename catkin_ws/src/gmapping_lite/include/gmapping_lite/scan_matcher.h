@@ -1,8 +1,8 @@
 // Scan matcher in gmapping's spirit with a likelihood field: each beam end point is scored by
-// its distance to the nearest occupied cell's mean hit position, exp(-d^2 / 2 sigma^2). The
-// pose is found by hill climbing over x, y and yaw with a widened kernel (steps lstep / 2^k and
-// astep / 2^k at level k, under gmapping's odometry-reliability prior), then refined by a few
-// point-to-point ICP steps against the field's nearest hit positions.
+// its distance d to the nearest occupied cell (to its wall's line on walls, see MatchField),
+// exp(-d^2 / 2 sigma^2). The pose is found by hill climbing over x, y and yaw with a widened
+// kernel (steps lstep / 2^k and astep / 2^k at level k, under gmapping's odometry-reliability
+// prior), then polished by a few point-to-line ICP steps against the same field.
 #pragma once
 
 #include <algorithm>
@@ -12,6 +12,7 @@
 
 #include "gmapping_lite/grid_map.h"
 #include "gmapping_lite/laser.h"
+#include "gmapping_lite/match_field.h"
 #include "gmapping_lite/pose2.h"
 
 namespace gmapping_lite {
@@ -47,40 +48,6 @@ struct ScanPoints {
   std::vector<Point> points;
 };
 
-// A flat, read-only likelihood field over the part of one particle's map a match can touch:
-// for every cell, the mean hit position of the nearest occupied cell within `radius`.
-class MatchField {
- public:
-  void build(const GridMap& map, const CellIndex& min, const CellIndex& max, double fullness,
-             double radius);
-
-  // Squared distance from (x, y) to the nearest occupied mean, capped at radius^2.
-  double distance2(double x, double y) const {
-    double qx, qy;
-    return nearest(x, y, &qx, &qy);
-  }
-
-  // Like distance2, also giving the nearest occupied mean (unset when capped).
-  double nearest(double x, double y, double* qx, double* qy) const {
-    const int i = static_cast<int>(std::floor(x * inv_res_)) - x0_;
-    const int j = static_cast<int>(std::floor(y * inv_res_)) - y0_;
-    if (i < 0 || j < 0 || i >= w_ || j >= h_) return cap2_;
-    const std::size_t k = static_cast<std::size_t>(j) * w_ + i;
-    const float mx = near_x_[k];
-    if (std::isnan(mx)) return cap2_;
-    *qx = mx;
-    *qy = near_y_[k];
-    const double ex = x - *qx, ey = y - *qy;
-    return std::min(cap2_, ex * ex + ey * ey);
-  }
-
- private:
-  int x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;
-  double inv_res_ = 20.0, cap2_ = 0.25;
-  std::vector<float> near_x_, near_y_;
-  std::vector<int> queue_;
-};
-
 class ScanMatcher {
  public:
   ScanMatcher(const MatcherParams& params, double resolution);
@@ -105,9 +72,11 @@ class ScanMatcher {
 
  private:
   double scoreAt(const Pose2& pose, const ScanPoints& scan, double inv_two_sigma2) const;
-  // Point-to-point ICP against the field's nearest means: finds the score's peak along
+  // Gauss-Newton ICP (point-to-line on walls) against the field: finds the score's peak along
   // diagonal ridges that axis-aligned climbing stalls on.
-  Pose2 refine(const Pose2& start, const ScanPoints& scan) const;
+  // `guess` and `prior` keep directions the scan does not constrain (a corridor) at odometry's.
+  Pose2 refine(const Pose2& start, const ScanPoints& scan, const Pose2& guess,
+               const OdometryPrior& prior) const;
 
   MatcherParams params_;
   double resolution_;

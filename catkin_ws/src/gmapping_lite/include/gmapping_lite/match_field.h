@@ -1,0 +1,66 @@
+// The likelihood field a scan is matched against: for every cell of the part of one particle's
+// map a match can touch, the nearest occupied cell's mean hit position, and where that cell
+// lies on a straight wall, the wall's normal. Distances to wall cells are measured along the
+// normal (point-to-line, the line reaching as far as the field's radius), so a scan that only
+// partly overlaps the mapped part of a wall is not pulled back along the wall towards the
+// mapped end: the bias point-to-point matching shows at every turn into new territory, and
+// what made a robot turning on the spot in a corridor slide along it.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "gmapping_lite/grid_map.h"
+
+namespace gmapping_lite {
+
+// One occupied cell: its mean hit position and, on a wall, the unit normal (else 0, 0).
+struct FieldSeed {
+  float mx, my;
+  float nx, ny;
+};
+
+class MatchField {
+ public:
+  void build(const GridMap& map, const CellIndex& min, const CellIndex& max, double fullness,
+             double radius);
+
+  // Squared distance from (x, y) to the nearest occupied cell (to its wall's line for wall
+  // cells), capped at radius^2.
+  double distance2(double x, double y) const {
+    const FieldSeed* s = seedAt(x, y);
+    return s ? std::min(cap2_, seedDistance2(*s, x, y)) : cap2_;
+  }
+
+  // The seed nearest to (x, y), or nullptr beyond the radius or outside the field.
+  const FieldSeed* seedAt(double x, double y) const {
+    const int i = static_cast<int>(std::floor(x * inv_res_)) - x0_;
+    const int j = static_cast<int>(std::floor(y * inv_res_)) - y0_;
+    if (i < 0 || j < 0 || i >= w_ || j >= h_) return nullptr;
+    const int32_t k = nearest_[static_cast<std::size_t>(j) * w_ + i];
+    return k < 0 ? nullptr : &seeds_[static_cast<std::size_t>(k)];
+  }
+
+  static double seedDistance2(const FieldSeed& s, double x, double y) {
+    const double ex = x - s.mx, ey = y - s.my;
+    if (s.nx == 0.0f && s.ny == 0.0f) return ex * ex + ey * ey;
+    const double across = ex * s.nx + ey * s.ny;
+    return across * across;
+  }
+
+  std::size_t seedCount() const { return seeds_.size(); }
+
+ private:
+  void estimateNormals();
+
+  int x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;
+  double inv_res_ = 20.0, cap2_ = 0.25;
+  std::vector<FieldSeed> seeds_;
+  std::vector<int32_t> nearest_;  // per cell: index into seeds_, -1 for none
+  std::vector<int32_t> queue_;
+};
+
+}  // namespace gmapping_lite
