@@ -72,8 +72,7 @@ void GridMap::growToInclude(int px, int py) {
   npy_ = ny1 - ny0;
 }
 
-Cell& GridMap::edit(int ix, int iy) {
-  const int px = patchOf(ix), py = patchOf(iy);
+Cell* GridMap::editPatch(int px, int py) {
   PatchPtr* s = slot(px, py);
   if (!s) {
     growToInclude(px, py);
@@ -84,18 +83,31 @@ Cell& GridMap::edit(int ix, int iy) {
   } else if (s->use_count() > 1) {
     *s = std::make_shared<Patch>(**s);  // copy on write
   }
-  return (*s)->cells[offsetIn(iy) * kPatchSize + offsetIn(ix)];
+  return (*s)->cells;
+}
+
+Cell& GridMap::edit(int ix, int iy) {
+  return editPatch(patchOf(ix), patchOf(iy))[offsetIn(iy) * kPatchSize + offsetIn(ix)];
 }
 
 void GridMap::traceBeam(double x0, double y0, double x1, double y1, bool hit) {
   const CellIndex a = toCell(x0, y0), b = toCell(x1, y1);
-  // Bresenham over cells from a to b, excluding b.
+  // Bresenham over cells from a to b, excluding b. The patch being written is looked up (and
+  // un-shared) once per patch the beam enters, not once per cell: patches are heap objects,
+  // so the pointer stays valid while the patch table grows.
   int x = a.x, y = a.y;
   const int dx = std::abs(b.x - a.x), dy = -std::abs(b.y - a.y);
   const int sx = a.x < b.x ? 1 : -1, sy = a.y < b.y ? 1 : -1;
   int err = dx + dy;
+  int patch_x = patchOf(x), patch_y = patchOf(y);
+  Cell* cells = editPatch(patch_x, patch_y);
   while (!(x == b.x && y == b.y)) {
-    edit(x, y).visits += 1;
+    if (patchOf(x) != patch_x || patchOf(y) != patch_y) {
+      patch_x = patchOf(x);
+      patch_y = patchOf(y);
+      cells = editPatch(patch_x, patch_y);
+    }
+    cells[offsetIn(y) * kPatchSize + offsetIn(x)].visits += 1;
     const int e2 = 2 * err;
     if (e2 >= dy) {
       err += dy;

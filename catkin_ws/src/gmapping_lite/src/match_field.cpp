@@ -1,5 +1,6 @@
 #include "gmapping_lite/match_field.h"
 
+#include <climits>
 #include <cmath>
 
 namespace gmapping_lite {
@@ -12,32 +13,73 @@ constexpr int kNormalWindow = 2;  // neighbours within this many cells shape the
 constexpr int kMinNeighbours = 3;
 }  // namespace
 
-void MatchField::build(const GridMap& map, const CellIndex& min, const CellIndex& max,
+void MatchField::build(const GridMap& map, const std::vector<Point>& focus, double reach,
                        double fullness, double radius) {
   const double res = map.resolution();
-  x0_ = min.x;
-  y0_ = min.y;
-  w_ = std::max(0, max.x - min.x);
-  h_ = std::max(0, max.y - min.y);
   inv_res_ = 1.0 / res;
   cap2_ = radius * radius;
-  nearest_.assign(static_cast<std::size_t>(w_) * h_, -1);
   seeds_.clear();
   queue_.clear();
-  // Seeds: occupied cells, each holding its own mean hit position. Walk the map patch by
-  // patch (one lookup per patch, not per cell).
+  // Queries land within `reach` of a focus point; the seeds that answer them lie within
+  // `radius` further.
+  const double reach_cells = (reach + radius) * inv_res_ + 1.0;
+  double minx = 0, maxx = 0, miny = 0, maxy = 0;
+  for (std::size_t k = 0; k < focus.size(); ++k) {
+    const double x = focus[k].x * inv_res_, y = focus[k].y * inv_res_;
+    minx = k ? std::min(minx, x) : x;
+    maxx = k ? std::max(maxx, x) : x;
+    miny = k ? std::min(miny, y) : y;
+    maxy = k ? std::max(maxy, y) : y;
+  }
+  auto blockFloor = [](double cells) {
+    return (static_cast<int>(std::floor(cells)) >> kBlockBits) << kBlockBits;
+  };
+  x0_ = blockFloor(minx - reach_cells);
+  y0_ = blockFloor(miny - reach_cells);
+  w_ = focus.empty() ? 0 : blockFloor(maxx + reach_cells) + kBlock - x0_;
+  h_ = focus.empty() ? 0 : blockFloor(maxy + reach_cells) + kBlock - y0_;
+  bw_ = w_ >> kBlockBits;
+  bh_ = h_ >> kBlockBits;
+  nearest_.assign(static_cast<std::size_t>(w_) * h_, -1);
+  markBlocks(focus, reach_cells);
+  gatherSeeds(map, fullness);
+  estimateNormals();
+  propagate(res);
+}
+
+void MatchField::markBlocks(const std::vector<Point>& focus, double reach_cells) {
+  marked_.assign(static_cast<std::size_t>(bw_) * bh_, 0);
+  const int span = static_cast<int>(std::ceil(reach_cells / kBlock));
+  int last_bx = INT32_MIN, last_by = INT32_MIN;
+  for (const Point& p : focus) {
+    const int bx = (static_cast<int>(std::floor(p.x * inv_res_)) - x0_) >> kBlockBits;
+    const int by = (static_cast<int>(std::floor(p.y * inv_res_)) - y0_) >> kBlockBits;
+    if (bx == last_bx && by == last_by) continue;  // neighbouring beams mostly share a block
+    last_bx = bx;
+    last_by = by;
+    for (int j = std::max(0, by - span); j <= std::min(bh_ - 1, by + span); ++j)
+      for (int i = std::max(0, bx - span); i <= std::min(bw_ - 1, bx + span); ++i)
+        marked_[static_cast<std::size_t>(j) * bw_ + i] = 1;
+  }
+}
+
+void MatchField::gatherSeeds(const GridMap& map, double fullness) {
+  // Seeds: occupied cells of the marked blocks, each holding its own mean hit position. A
+  // block lies inside one map patch: one patch lookup per block.
+  const double res = map.resolution();
   const int n_patch = GridMap::kPatchSize;
   auto floorDiv = [n_patch](int v) {
     return v >= 0 ? v / n_patch : -((-v + n_patch - 1) / n_patch);
   };
-  for (int py = floorDiv(y0_); py <= floorDiv(y0_ + h_ - 1); ++py) {
-    for (int px = floorDiv(x0_); px <= floorDiv(x0_ + w_ - 1); ++px) {
+  for (int bj = 0; bj < bh_; ++bj) {
+    for (int bi = 0; bi < bw_; ++bi) {
+      if (!marked_[static_cast<std::size_t>(bj) * bw_ + bi]) continue;
+      const int cx0 = x0_ + bi * kBlock, cy0 = y0_ + bj * kBlock;
+      const int px = floorDiv(cx0), py = floorDiv(cy0);
       const Cell* cells = map.patchCells(px, py);
       if (!cells) continue;
-      const int cx0 = std::max(px * n_patch, x0_), cx1 = std::min((px + 1) * n_patch, x0_ + w_);
-      const int cy0 = std::max(py * n_patch, y0_), cy1 = std::min((py + 1) * n_patch, y0_ + h_);
-      for (int cy = cy0; cy < cy1; ++cy) {
-        for (int cx = cx0; cx < cx1; ++cx) {
+      for (int cy = cy0; cy < cy0 + kBlock; ++cy) {
+        for (int cx = cx0; cx < cx0 + kBlock; ++cx) {
           const Cell& c = cells[(cy - py * n_patch) * n_patch + (cx - px * n_patch)];
           if (!c.hits || c.occupancy() <= fullness) continue;
           const std::size_t k = static_cast<std::size_t>(cy - y0_) * w_ + (cx - x0_);
@@ -50,9 +92,12 @@ void MatchField::build(const GridMap& map, const CellIndex& min, const CellIndex
       }
     }
   }
-  estimateNormals();
-  // Brushfire: hand each cell the nearest seed of its neighbours, up to `radius`. Cells are
-  // re-queued when a nearer seed arrives, so the result is the nearest seed in practice.
+}
+
+void MatchField::propagate(double res) {
+  // Brushfire: hand each cell the nearest seed of its neighbours, up to the radius, within the
+  // marked blocks. Cells are re-queued when a nearer seed arrives, so the result is the
+  // nearest seed in practice.
   auto dist2 = [&](int i, int j, const FieldSeed& s) {
     const double ex = (x0_ + i + 0.5) * res - s.mx, ey = (y0_ + j + 0.5) * res - s.my;
     return ex * ex + ey * ey;
@@ -67,7 +112,7 @@ void MatchField::build(const GridMap& map, const CellIndex& min, const CellIndex
       if (nj < 0 || nj >= h_) continue;
       for (int di = -1; di <= 1; ++di) {
         const int ni = i + di;
-        if ((!di && !dj) || ni < 0 || ni >= w_) continue;
+        if ((!di && !dj) || ni < 0 || ni >= w_ || !blockMarked(ni, nj)) continue;
         const double d2 = dist2(ni, nj, s);
         if (d2 > cap2_) continue;
         const std::size_t nk = static_cast<std::size_t>(nj) * w_ + ni;

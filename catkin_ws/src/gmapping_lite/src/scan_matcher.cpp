@@ -70,23 +70,16 @@ ScanPoints ScanMatcher::matchPoints(const LaserGeometry& laser, const Ranges& ra
 }
 
 void ScanMatcher::prepare(const GridMap& map, const Pose2& pose, const ScanPoints& scan) {
-  // Field: bounding box of the end points, widened for the distance a climb may travel
-  // (translation, and the sweep of far points under rotation).
-  double minx = pose.x, maxx = pose.x, miny = pose.y, maxy = pose.y, reach = 0.0;
+  // The field covers the end points as far as a climb may carry them: translation, and the
+  // sweep of far points under rotation.
+  double reach = 0.0;
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
+  focus_.clear();
   for (const auto& p : scan.points) {
-    const double wx = pose.x + c * p.hx - s * p.hy, wy = pose.y + s * p.hx + c * p.hy;
-    minx = std::min(minx, wx);
-    maxx = std::max(maxx, wx);
-    miny = std::min(miny, wy);
-    maxy = std::max(maxy, wy);
+    focus_.push_back({pose.x + c * p.hx - s * p.hy, pose.y + s * p.hx + c * p.hy});
     reach = std::max(reach, std::hypot(p.hx, p.hy));
   }
-  const double margin = 0.3 + 0.05 * reach + params_.field_radius;
-  const GridMap grid(resolution_);
-  const CellIndex lo = grid.toCell(minx - margin, miny - margin);
-  const CellIndex hi = grid.toCell(maxx + margin, maxy + margin);
-  field_.build(map, lo, {hi.x + 1, hi.y + 1}, params_.fullness, params_.field_radius);
+  field_.build(map, focus_, 0.3 + 0.05 * reach, params_.fullness, params_.field_radius);
 }
 
 double ScanMatcher::scoreAt(const Pose2& pose, const ScanPoints& scan,
@@ -126,20 +119,24 @@ double ScanMatcher::optimize(const Pose2& start, const ScanPoints& scan, Pose2* 
                              const OdometryPrior& prior) const {
   const double k_xy = prior.sigma_xy > 0 ? 0.5 / (prior.sigma_xy * prior.sigma_xy) : 0.0;
   const double k_th = prior.sigma_theta > 0 ? 0.5 / (prior.sigma_theta * prior.sigma_theta) : 0.0;
-  auto odometryGain = [&](const Pose2& p) {
+  auto odometryLog = [&](const Pose2& p) {
     const double dx = p.x - start.x, dy = p.y - start.y;
     const double dth = normalizeAngle(p.theta - start.theta);
-    return std::exp(-k_xy * (dx * dx + dy * dy) - k_th * dth * dth);
+    return -k_xy * (dx * dx + dy * dy) - k_th * dth * dth;
+  };
+  auto objective = [&](const Pose2& p, double inv) {
+    return std::exp(odometryLog(p)) * scoreAt(p, scan, inv);
   };
   Pose2 current = start;
   double ldelta = params_.lstep, adelta = params_.astep;
   const int levels = std::max(1, params_.iterations);
+  double inv = 0.0;
   for (int level = 0; level < levels; ++level) {
     // Wide kernels first so a pose some centimetres off still feels the walls.
     const double widen = std::max(1.0, std::ldexp(1.0, params_.kernel_size + 1 - level));
     const double sigma = params_.sigma * widen;
-    const double inv = 0.5 / (sigma * sigma);
-    double current_score = odometryGain(current) * scoreAt(current, scan, inv);
+    inv = 0.5 / (sigma * sigma);
+    double current_score = objective(current, inv);
     for (int climb = 0; climb < 40; ++climb) {
       const Pose2 moves[6] = {{ldelta, 0, 0}, {-ldelta, 0, 0}, {0, ldelta, 0},
                               {0, -ldelta, 0}, {0, 0, adelta}, {0, 0, -adelta}};
@@ -148,7 +145,7 @@ double ScanMatcher::optimize(const Pose2& start, const ScanPoints& scan, Pose2* 
       for (const Pose2& m : moves) {
         const Pose2 candidate(current.x + m.x, current.y + m.y,
                               normalizeAngle(current.theta + m.theta));
-        const double sc = odometryGain(candidate) * scoreAt(candidate, scan, inv);
+        const double sc = objective(candidate, inv);
         if (sc > best_local_score) {
           best_local_score = sc;
           best_local = candidate;
@@ -161,12 +158,11 @@ double ScanMatcher::optimize(const Pose2& start, const ScanPoints& scan, Pose2* 
     ldelta *= 0.5;
     adelta *= 0.5;
   }
-  // Keep the ICP polish only if it is better under the same odometry prior.
+  // Keep the ICP polish only if it is better under the same objective.
   const Pose2 refined = refine(current, scan, start, prior);
-  const double climbed = score(current, scan), polished = score(refined, scan);
-  const bool take = polished * odometryGain(refined) >= climbed * odometryGain(current);
+  const bool take = objective(refined, inv) >= objective(current, inv);
   *best = take ? refined : current;
-  return take ? polished : climbed;
+  return score(*best, scan);
 }
 
 Pose2 ScanMatcher::refine(const Pose2& start, const ScanPoints& scan, const Pose2& guess,

@@ -108,14 +108,15 @@ TEST(ScanMatcher, TurningInFrontOfAWallDoesNotSlideAlongIt) {
   GridMap map(0.05);
   Pose2 pose(10.0, 5.0, M_PI / 2 - 0.5);
   registerScan(&map, pose, f.laser, f.scanAt(pose), params.max_range, params.max_urange);
-  const OdometryPrior prior{0.12, 0.045};
+  const OdometryPrior prior{0.08, 0.03};
   for (int step = 0; step < 4; ++step) {
     const Pose2 truth(10.0, 5.0, pose.theta + 0.25);
     const Ranges ranges = f.scanAt(truth);
     Pose2 best;
     matcher.match(map, Pose2(pose.x, pose.y, truth.theta), matcher.matchPoints(f.laser, ranges),
                   &best, prior);
-    EXPECT_NEAR(best.x, truth.x, 0.01) << "step " << step;
+    // Point-to-point matching slid 6-19 mm here; point-to-line stays within 3 mm.
+    EXPECT_NEAR(best.x, truth.x, 0.008) << "step " << step;
     EXPECT_NEAR(best.y, truth.y, 0.01) << "step " << step;
     EXPECT_NEAR(best.theta, truth.theta, 0.005) << "step " << step;
     pose = best;

@@ -74,6 +74,8 @@ class GridMap {
   PatchPtr* slot(int px, int py);
   const PatchPtr* slot(int px, int py) const;
   void growToInclude(int px, int py);
+  // The writable cells of patch (px, py): allocated or un-shared as needed.
+  Cell* editPatch(int px, int py);
 
   double resolution_;
   int px0_ = 0, py0_ = 0, npx_ = 0, npy_ = 0;

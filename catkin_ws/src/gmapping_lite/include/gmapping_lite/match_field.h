@@ -25,7 +25,15 @@ struct FieldSeed {
 
 class MatchField {
  public:
-  void build(const GridMap& map, const CellIndex& min, const CellIndex& max, double fullness,
+  struct Point {
+    double x, y;
+  };
+
+  // Prepare the field for queries within `reach` of the `focus` points (world coordinates):
+  // occupied cells are those above `fullness`; distances are capped at `radius`. Only blocks
+  // of cells near a focus point are computed, so the work follows the scan's end points
+  // rather than the area their bounding box spans.
+  void build(const GridMap& map, const std::vector<Point>& focus, double reach, double fullness,
              double radius);
 
   // Squared distance from (x, y) to the nearest occupied cell (to its wall's line for wall
@@ -54,9 +62,20 @@ class MatchField {
   std::size_t seedCount() const { return seeds_.size(); }
 
  private:
-  void estimateNormals();
+  static constexpr int kBlockBits = 3;  // blocks of 8 x 8 cells; a patch holds whole blocks
+  static constexpr int kBlock = 1 << kBlockBits;
 
-  int x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;
+  void markBlocks(const std::vector<Point>& focus, double reach_cells);
+  void gatherSeeds(const GridMap& map, double fullness);
+  void estimateNormals();
+  void propagate(double res);
+  bool blockMarked(int i, int j) const {
+    return marked_[static_cast<std::size_t>(j >> kBlockBits) * bw_ + (i >> kBlockBits)] != 0;
+  }
+
+  int x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;  // cells; x0_, y0_ and w_, h_ are whole blocks
+  int bw_ = 0, bh_ = 0;                   // blocks
+  std::vector<unsigned char> marked_;     // per block: within reach of a focus point
   double inv_res_ = 20.0, cap2_ = 0.25;
   std::vector<FieldSeed> seeds_;
   std::vector<int32_t> nearest_;  // per cell: index into seeds_, -1 for none

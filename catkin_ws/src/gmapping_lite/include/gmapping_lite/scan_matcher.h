@@ -28,7 +28,7 @@ struct MatcherParams {
   double max_range = 8.0;    // returns beyond this are ignored
   double max_urange = 8.0;   // returns beyond this clear space but mark nothing
   double fullness = 0.1;     // a cell with occupancy above this counts as occupied
-  double field_radius = 0.5; // how far the likelihood field looks for occupied cells (m)
+  double field_radius = 0.3; // how far the likelihood field looks for occupied cells (m)
 };
 
 // How far odometry's guess may be off (standard deviations): a candidate's score is
@@ -81,6 +81,7 @@ class ScanMatcher {
   MatcherParams params_;
   double resolution_;
   MatchField field_;
+  std::vector<MatchField::Point> focus_;  // scratch: the scan's end points in the world
 };
 
 // Enter one scan into a map at `pose` (all usable beams, not just the matching subset).
