@@ -2,6 +2,7 @@
 
 #include <climits>
 #include <cmath>
+#include <limits>
 
 namespace gmapping_lite {
 
@@ -97,11 +98,11 @@ void MatchField::gatherSeeds(const GridMap& map, double fullness) {
 void MatchField::propagate(double res) {
   // Brushfire: hand each cell the nearest seed of its neighbours, up to the radius, within the
   // marked blocks. Cells are re-queued when a nearer seed arrives, so the result is the
-  // nearest seed in practice.
-  auto dist2 = [&](int i, int j, const FieldSeed& s) {
-    const double ex = (x0_ + i + 0.5) * res - s.mx, ey = (y0_ + j + 0.5) * res - s.my;
-    return ex * ex + ey * ey;
-  };
+  // nearest seed in practice. Each cell keeps its best squared distance so far.
+  best2_.assign(nearest_.size(), std::numeric_limits<float>::infinity());
+  for (const int32_t k : queue_) best2_[static_cast<std::size_t>(k)] = 0.0f;
+  const float cell = static_cast<float>(res), cap2 = static_cast<float>(cap2_);
+  const float fx0 = static_cast<float>((x0_ + 0.5) * res), fy0 = static_cast<float>((y0_ + 0.5) * res);
   for (std::size_t q = 0; q < queue_.size(); ++q) {
     const int k = queue_[q];
     const int i = k % w_, j = k / w_;
@@ -110,15 +111,15 @@ void MatchField::propagate(double res) {
     for (int dj = -1; dj <= 1; ++dj) {
       const int nj = j + dj;
       if (nj < 0 || nj >= h_) continue;
+      const float ey = fy0 + nj * cell - s.my;
       for (int di = -1; di <= 1; ++di) {
         const int ni = i + di;
         if ((!di && !dj) || ni < 0 || ni >= w_ || !blockMarked(ni, nj)) continue;
-        const double d2 = dist2(ni, nj, s);
-        if (d2 > cap2_) continue;
+        const float ex = fx0 + ni * cell - s.mx;
+        const float d2 = ex * ex + ey * ey;
         const std::size_t nk = static_cast<std::size_t>(nj) * w_ + ni;
-        const int32_t held = nearest_[nk];
-        if (held == seed) continue;
-        if (held >= 0 && dist2(ni, nj, seeds_[static_cast<std::size_t>(held)]) <= d2) continue;
+        if (d2 > cap2 || d2 >= best2_[nk]) continue;
+        best2_[nk] = d2;
         nearest_[nk] = seed;
         queue_.push_back(static_cast<int32_t>(nk));
       }

@@ -80,6 +80,7 @@ class MatchField {
   std::vector<FieldSeed> seeds_;
   std::vector<int32_t> nearest_;  // per cell: index into seeds_, -1 for none
   std::vector<int32_t> queue_;
+  std::vector<float> best2_;  // scratch for the brushfire: each cell's best squared distance
 };
 
 }  // namespace gmapping_lite
