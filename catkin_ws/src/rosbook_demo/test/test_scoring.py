@@ -41,6 +41,23 @@ def test_perfect_slam_scores_zero_error_and_every_wall():
     correction = Trajectory(stamps, [(0.0, -0.02 * t, 0.0) for t in stamps])
     figures, tracks, _ = score(truth, drift, correction, (cells, res, origin), (cells, res, origin))
     assert figures["slam_rms_m"] == pytest.approx(0.0, abs=1e-9)
-    assert figures["odom_final_m"] == pytest.approx(0.18)
+    assert figures["slam_rms_m_start"] == pytest.approx(0.0, abs=1e-9)
+    assert figures["odom_final_m_start"] == pytest.approx(0.18)
+    # The best fit turns the drifting odometry onto the truth's line, but it still bends away.
+    assert 0.0 < figures["odom_rms_m"] < figures["odom_rms_m_start"]
     assert figures["walls_within_tolerance"] == 1.0
     assert set(tracks) == {"odometry", "SLAM"}
+
+
+def test_a_turned_but_consistent_map_scores_zero_after_the_best_fit():
+    cells, res, origin = room()
+    stamps = np.arange(0, 10, 1.0)
+    truth = Trajectory(stamps, [(0.1 * t, 0.05 * t, 0.0) for t in stamps])
+    odom = Trajectory(stamps, [(0.1 * t, 0.05 * t, 0.0) for t in stamps])
+    # SLAM turned its heading by 0.05 rad just after the start (map->odom is the identity at
+    # the first scan): from then on the whole path and map are turned about the start.
+    turn = (0.0, 0.0, 0.05)
+    correction = Trajectory(stamps, [turn if t > 0 else (0.0, 0.0, 0.0) for t in stamps])
+    figures, _, _ = score(truth, odom, correction, (cells, res, origin), (cells, res, origin))
+    assert figures["slam_rms_m"] == pytest.approx(0.0, abs=1e-9)
+    assert figures["slam_final_m_start"] == pytest.approx(0.05 * math.hypot(0.9, 0.45), rel=1e-3)

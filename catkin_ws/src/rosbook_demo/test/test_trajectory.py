@@ -1,8 +1,10 @@
 import math
 
+import numpy as np
 import pytest
 from rosbook_demo.trajectory import (
     Trajectory,
+    best_fit_frame,
     chain,
     compose,
     inverse,
@@ -55,3 +57,11 @@ def test_position_errors_and_rms():
     assert list(position_errors(estimate, truth)) == [3.0, 4.0]
     assert rms([3.0, 4.0]) == pytest.approx(math.sqrt(12.5))
     assert math.isnan(rms([]))
+
+
+def test_best_fit_frame_undoes_a_rigid_motion():
+    stamps = np.arange(0.0, 20.0)
+    truth = Trajectory(stamps, [(4 * math.cos(t / 3), 3 * math.sin(t / 2), 0.0) for t in stamps])
+    frame = (2.0, -1.0, 0.3)
+    seen = truth.transformed(inverse(frame))
+    assert best_fit_frame(seen, truth) == pytest.approx(frame)

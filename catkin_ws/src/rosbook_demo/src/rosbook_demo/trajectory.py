@@ -73,3 +73,18 @@ def position_errors(estimate, truth):
 
 def rms(errors):
     return float(np.sqrt(np.mean(np.square(errors)))) if len(errors) else float("nan")
+
+
+def best_fit_frame(estimate, truth):
+    """The frame F for which estimate.transformed(F) best fits truth: least-squares positions
+    at the estimate's stamps, rotation and translation only (Horn's method), as the standard
+    absolute trajectory error (ATE) aligns a trajectory before measuring it."""
+    if len(estimate) < 2 or not len(truth):
+        return (0.0, 0.0, 0.0)
+    src = estimate.poses[:, :2]
+    dst = np.array([truth.at(t)[:2] for t in estimate.t])
+    ms, md = src.mean(axis=0), dst.mean(axis=0)
+    a, b = src - ms, dst - md
+    yaw = math.atan2(float(np.sum(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0])), float(np.sum(a * b)))
+    c, s = math.cos(yaw), math.sin(yaw)
+    return (md[0] - (c * ms[0] - s * ms[1]), md[1] - (s * ms[0] + c * ms[1]), yaw)
