@@ -13,6 +13,16 @@ from .planner import approach_labels, choose_goal, distance_field, extract_path
 from .visibility import line_of_sight, sweep_headings
 
 
+def _drop_cells(labels, frontiers, rows, cols, drop):
+    """`labels` without the cells (rows[drop], cols[drop]), and the frontiers left a cell."""
+    if not drop.any():
+        return labels, frontiers
+    labels = labels.copy()
+    labels[rows[drop], cols[drop]] = 0
+    left = set(np.unique(labels[labels > 0]).tolist())
+    return labels, [f for f in frontiers if f.label in left]
+
+
 @dataclass
 class PlannerParams:
     plan_resolution: float = 0.10  # m: planning grid cell size (a multiple of the map's)
@@ -197,12 +207,7 @@ class MapPlanner:
                 origin = tuple(int(v) for v in g.to_cell(vx, vy))
                 targets = np.column_stack([rows[idx], cols[idx]])
                 seen[idx[line_of_sight(prep.classes, origin, targets)]] = True
-        if not seen.any():
-            return labels, frontiers
-        labels = labels.copy()
-        labels[rows[seen], cols[seen]] = 0
-        left = set(np.unique(labels[labels > 0]).tolist())
-        return labels, [f for f in frontiers if f.label in left]
+        return _drop_cells(labels, frontiers, rows, cols, seen)
 
     def _without(self, labels, frontiers, points):
         """Labels and frontiers without the cells near `points` (x, y)."""
@@ -214,12 +219,7 @@ class MapPlanner:
         dead = np.zeros(rows.shape, dtype=bool)
         for px, py in points:
             dead |= np.hypot(xs - px, ys - py) <= self.params.blacklist_radius
-        if not dead.any():
-            return labels, frontiers
-        labels = labels.copy()
-        labels[rows[dead], cols[dead]] = 0
-        left = set(np.unique(labels[labels > 0]).tolist())
-        return labels, [f for f in frontiers if f.label in left]
+        return _drop_cells(labels, frontiers, rows, cols, dead)
 
     def _all_but(self, goal, excluded):
         """An exclusion mask leaving only the 3 x 3 cells around `goal` (x, y)."""
