@@ -18,7 +18,7 @@ constexpr double kPriorFloorTheta = 0.03;  // rad
 ParticleFilter::ParticleFilter(const SlamParams& params)
     : params_(params),
       motion_(params.motion),
-      matcher_(params.matcher, params.delta),
+      matcher_(params.matcher),
       rng_(params.seed) {
   particles_.resize(static_cast<std::size_t>(std::max(1, params.particles)));
   for (auto& p : particles_) p.map = GridMap(params.delta);

@@ -49,8 +49,7 @@ bool solve3(const double h[3][3], const double g[3], double x[3]) {
 }
 }  // namespace
 
-ScanMatcher::ScanMatcher(const MatcherParams& params, double resolution)
-    : params_(params), resolution_(resolution) {}
+ScanMatcher::ScanMatcher(const MatcherParams& params) : params_(params) {}
 
 ScanPoints ScanMatcher::matchPoints(const LaserGeometry& laser, const Ranges& ranges) const {
   ScanPoints out;

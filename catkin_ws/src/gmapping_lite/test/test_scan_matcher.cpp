@@ -39,7 +39,7 @@ TEST(ScanMatcher, RecoversAPerturbedPose) {
     const Ranges r = f.scanAt(p);
     registerScan(&map, p, f.laser, r, params.max_range, params.max_urange);
   }
-  ScanMatcher matcher(params, 0.05);
+  ScanMatcher matcher(params);
   const Ranges ranges = f.scanAt(truth);
   const ScanPoints points = matcher.matchPoints(f.laser, ranges);
   ASSERT_GT(points.points.size(), 500u);
@@ -58,7 +58,7 @@ TEST(ScanMatcher, LskipThinsTheBeams) {
   Fixture f;
   MatcherParams params;
   params.lskip = 9;
-  ScanMatcher matcher(params, 0.05);
+  ScanMatcher matcher(params);
   const Ranges ranges = f.scanAt(Pose2(3.0, 5.0, 0.0));
   const ScanPoints points = matcher.matchPoints(f.laser, ranges);
   EXPECT_LE(points.points.size(), 64u);
@@ -104,7 +104,7 @@ TEST(ScanMatcher, TurningInFrontOfAWallDoesNotSlideAlongIt) {
   f.world.fillRect(0.0, 6.0, 20.0, 6.2);
   MatcherParams params;
   params.max_range = params.max_urange = 6.0;
-  ScanMatcher matcher(params, 0.05);
+  ScanMatcher matcher(params);
   GridMap map(0.05);
   Pose2 pose(10.0, 5.0, M_PI / 2 - 0.5);
   registerScan(&map, pose, f.laser, f.scanAt(pose), params.max_range, params.max_urange);

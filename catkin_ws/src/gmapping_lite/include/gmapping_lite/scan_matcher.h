@@ -50,7 +50,7 @@ struct ScanPoints {
 
 class ScanMatcher {
  public:
-  ScanMatcher(const MatcherParams& params, double resolution);
+  explicit ScanMatcher(const MatcherParams& params);
 
   const MatcherParams& params() const { return params_; }
 
@@ -79,7 +79,6 @@ class ScanMatcher {
                const OdometryPrior& prior) const;
 
   MatcherParams params_;
-  double resolution_;
   MatchField field_;
   std::vector<MatchField::Point> focus_;  // scratch: the scan's end points in the world
 };
