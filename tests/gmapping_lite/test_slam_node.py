@@ -179,7 +179,8 @@ def test_bag_played_with_clock(ros, tmp_path):
     )
     drive(ros, "--duration", "40", "--speed", "4")
     ros.stop(recorder)
-    assert bag.exists()
+    # rosbag's recording child closes (renames) the bag after the wrapper has exited.
+    ros.wait_for(lambda: bag.exists(), 30, "the bag to be closed")
     node = start_slam(ros, map_update_interval=1.0)
     ros.run(["rosbag", "play", "--clock", "-r", "4", str(bag)], timeout=60)
     assert_room_mapped(ros.echo("map")[0]["msg"])
