@@ -192,10 +192,7 @@ class Probe:
         self.graph.wait_for(connected, self.timeout, "probe to connect")
 
     def messages(self):
-        if not self.out.exists():
-            return []
-        lines = self.out.read_text().splitlines()
-        return [json.loads(line) for line in lines if line.strip()]
+        return read_jsonl(self.out)
 
     def wait(self, timeout=60):
         try:
@@ -211,6 +208,18 @@ class Probe:
     def stop(self):
         self.graph.stop(self.proc)
         return self.messages()
+
+
+def read_jsonl(path):
+    """Every complete JSON-lines record in `path` so far ([] if it does not exist yet). A
+    writer may be in the middle of the last line while we read: only lines that end in a
+    newline are whole, so a partial tail is left for the next read."""
+    path = Path(path)
+    if not path.exists():
+        return []
+    text = path.read_text()
+    complete = text[: text.rfind("\n") + 1]
+    return [json.loads(line) for line in complete.splitlines() if line.strip()]
 
 
 def run_rostest(package, test_file, timeout=300, extra_args=()):

@@ -1,7 +1,6 @@
 """End to end: the explorer maps the simulator's office world, SLAM in the loop, faster
 than real time. Figures (coverage over sim time, contact, real-time factor) are printed."""
 
-import json
 import os
 import shutil
 import subprocess
@@ -14,6 +13,7 @@ import pytest
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 from kinematic_sim import WORLDS  # noqa: E402
+from roskit import read_jsonl  # noqa: E402
 
 # Sim speed 8 runs at a real-time factor of about 7.5-8 on a loaded 2-core machine.
 SPEED = float(os.environ.get("EXPLORER_SIM_SPEED", "8"))
@@ -41,9 +41,7 @@ def slam_node_available():
 
 
 def records(path):
-    if not path.exists():
-        return []
-    return [json.loads(line) for line in path.read_text().splitlines() if line.strip()]
+    return read_jsonl(path)
 
 
 def run_exploration(ros, tmp_path, world="office", use_slam=True):
