@@ -1,0 +1,94 @@
+"""The main job end to end, as `make demo` runs it: scripts/demo.sh explores, maps, saves the
+map with map_saver, scores it against ground truth and draws the overlay. A short run
+(120 sim s) checks every product and that the figures say what a working SLAM says."""
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+REPO = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(REPO / "tests"))
+from roskit import ros_environment  # noqa: E402
+
+SIM_SECONDS = 120
+
+
+@pytest.fixture(scope="module")
+def main_job(tmp_path_factory):
+    out = tmp_path_factory.mktemp("main job") / "out dir"  # spaces in the path on purpose
+    env = ros_environment(0)  # demo.sh picks its own master port; this only checks the env
+    env.pop("ROS_MASTER_URI")
+    done = subprocess.run(
+        [
+            str(REPO / "scripts" / "demo.sh"),
+            "--sim-seconds",
+            str(SIM_SECONDS),
+            "--speed",
+            "4",
+            "--progress-every",
+            "30",
+            "--out",
+            str(out),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=900,
+        env=env,
+        stdin=subprocess.DEVNULL,
+    )
+    return done, out
+
+
+@pytest.mark.slow
+@pytest.mark.timeout(960)
+def test_demo_writes_the_map_overlay_and_figures(main_job):
+    done, out = main_job
+    assert done.returncode == 0, done.stdout[-4000:] + done.stderr[-4000:]
+    for name in ("office_map.pgm", "office_map.yaml", "office_truth.yaml", "office.bag"):
+        assert (out / name).stat().st_size > 0, name
+    png = (out / "office_overlay.png").read_bytes()
+    assert png.startswith(b"\x89PNG\r\n\x1a\n") and len(png) > 10_000
+    # The map map_saver wrote loads with map_server's reader and is the book's trinary map.
+    from map_server.map_io import load_map
+
+    saved = load_map(str(out / "office_map.yaml"))
+    assert 0.01 <= saved.resolution <= 0.1
+    assert {-1, 0, 100} >= set(int(v) for v in set(saved.data.flatten().tolist()))
+
+
+@pytest.mark.slow
+@pytest.mark.timeout(960)
+def test_demo_prints_progress_and_sane_figures(main_job):
+    done, out = main_job
+    assert done.returncode == 0, done.stdout[-4000:] + done.stderr[-4000:]
+    progress = [line for line in done.stdout.splitlines() if "s simulated" in line]
+    assert len(progress) >= 3, done.stdout  # a line every 30 sim s over 120 s
+    figures = json.loads((out / "figures.json").read_text())
+    # The explorer drives at up to 0.3-0.5 m/s: in 120 s it covers well over 10 m.
+    assert figures["distance_m"] >= 10.0, figures
+    # SLAM corrects odometry's drift: its error is small in absolute terms and it maps walls
+    # where the walls are. Bounds are loose (a short run, any machine load), yet a broken
+    # SLAM, scorer or frame convention fails them by an order of magnitude.
+    assert figures["slam_rms_m"] < 0.25, figures
+    assert figures["walls_within_tolerance"] >= 0.7, figures
+    for key, value in figures.items():
+        if isinstance(value, float):
+            assert value == value and abs(value) != float("inf"), (key, value)
+
+
+def test_demo_rejects_nonsense_arguments(tmp_path):
+    env = dict(os.environ, PYENV_VERSION="system")
+    done = subprocess.run(
+        [str(REPO / "scripts" / "demo.sh"), "--sim-seconds", "-5", "--out", str(tmp_path)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        env=env,
+        stdin=subprocess.DEVNULL,
+    )
+    assert done.returncode == 2
+    assert "--sim-seconds" in done.stderr
