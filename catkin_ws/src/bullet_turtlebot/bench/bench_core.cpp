@@ -14,6 +14,7 @@
 #include <string>
 
 #include "bullet_turtlebot/simulation.hpp"
+#include "bullet_turtlebot/shipped_worlds.hpp"
 #include "bullet_turtlebot/world_spec.hpp"
 
 namespace bt = bullet_turtlebot;
@@ -45,9 +46,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  if (world_arg.find('/') == std::string::npos) {
-    world_arg = std::string(BULLET_TURTLEBOT_WORLDS_DIR) + "/" + world_arg + ".yaml";
-  }
+  world_arg = bt::resolve_world_path(world_arg, bt::shipped_worlds_dir());
   const auto t_load = std::chrono::steady_clock::now();
   bt::WorldSpec spec;
   try {

@@ -52,6 +52,10 @@ class WorldFileError : public std::runtime_error {
 
 WorldSpec load_world_file(const std::string& path);
 
+// A bare name ("maze") names a shipped world in worlds_dir; anything with a slash or ending
+// in ".yaml" is a path and is returned as it is.
+std::string resolve_world_path(const std::string& world, const std::string& worlds_dir);
+
 // Parses YAML text; `source` names it in messages, relative image paths resolve from base_dir.
 WorldSpec parse_world_yaml(const std::string& text, const std::string& source, const std::string& base_dir);
 

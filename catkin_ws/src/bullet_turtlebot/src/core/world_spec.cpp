@@ -210,4 +210,10 @@ WorldSpec load_world_file(const std::string& path) {
   return parse_world_yaml(text.str(), path, dir_name(path));
 }
 
+std::string resolve_world_path(const std::string& world, const std::string& worlds_dir) {
+  const bool is_path = world.find('/') != std::string::npos ||
+                       (world.size() > 5 && world.compare(world.size() - 5, 5, ".yaml") == 0);
+  return is_path ? world : worlds_dir + "/" + world + ".yaml";
+}
+
 }  // namespace bullet_turtlebot

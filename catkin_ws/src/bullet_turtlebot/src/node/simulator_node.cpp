@@ -4,19 +4,9 @@
 #include <cstdio>
 #include <memory>
 
+#include "bullet_turtlebot/shipped_worlds.hpp"
 #include "bullet_turtlebot/world_spec.hpp"
 #include "ros_sim.hpp"
-
-namespace {
-
-// A bare name ("maze") means a shipped world; anything with a slash or ".yaml" is a path.
-std::string resolve_world(const std::string& world, const std::string& worlds_dir) {
-  const bool is_path = world.find('/') != std::string::npos ||
-                       (world.size() > 5 && world.compare(world.size() - 5, 5, ".yaml") == 0);
-  return is_path ? world : worlds_dir + "/" + world + ".yaml";
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "simulator");
@@ -26,8 +16,8 @@ int main(int argc, char** argv) {
 
   std::string world_name, worlds_dir;
   pnh.param<std::string>("world", world_name, "playground");
-  pnh.param<std::string>("worlds_dir", worlds_dir, BULLET_TURTLEBOT_WORLDS_DIR);
-  const std::string world_path = resolve_world(world_name, worlds_dir);
+  pnh.param<std::string>("worlds_dir", worlds_dir, bt::shipped_worlds_dir());
+  const std::string world_path = bt::resolve_world_path(world_name, worlds_dir);
 
   bt::WorldSpec spec;
   try {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "bullet_turtlebot/occupancy_export.hpp"
+#include "bullet_turtlebot/shipped_worlds.hpp"
 #include "bullet_turtlebot/world_spec.hpp"
 
 namespace {
@@ -52,9 +53,7 @@ int main(int argc, char** argv) {
   }
   if (world.empty()) return usage("no world given");
   if (!(resolution > 0)) return usage("--resolution must be > 0");
-  if (world.find('/') == std::string::npos && world.find(".yaml") == std::string::npos) {
-    world = std::string(BULLET_TURTLEBOT_WORLDS_DIR) + "/" + world + ".yaml";
-  }
+  world = bt::resolve_world_path(world, bt::shipped_worlds_dir());
   try {
     const bt::World w(bt::load_world_file(world));
     const bt::MapImage map = bt::rasterize_world(w, resolution, margin, min_height);
