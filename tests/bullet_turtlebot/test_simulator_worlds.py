@@ -8,6 +8,7 @@ import pytest
 from simkit import last_pose, ranges, start_simulator, write_pgm, write_world
 
 WILLOW = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "willow-full.pgm"
+WORLDS = Path(__file__).resolve().parents[2] / "catkin_ws" / "src" / "bullet_turtlebot" / "worlds"
 
 
 def run_simulator(ros, world, *extra):
@@ -27,6 +28,21 @@ def test_shipped_worlds_run_and_the_robot_sees_walls(ros, world):
     assert any(math.isfinite(v) for v in r)
     x, y, _, _ = last_pose(ros)
     assert math.isfinite(x) and math.isfinite(y)
+
+
+@pytest.mark.parametrize("world", ["hospital", "warehouse", "ring", "lab"])
+def test_generated_family_worlds_start_where_the_file_says_and_see_walls(ros, world):
+    """The procedural families' shipped worlds (make_worlds.py --family F --seed 1)."""
+    spec = (WORLDS / f"{world}.yaml").read_text()
+    start = [float(v) for v in spec.split("\nstart: [")[1].split("]")[0].split(",")]
+    start_simulator(ros, world)
+    x, y, yaw, _ = last_pose(ros)
+    assert abs(x - start[0]) < 1e-3 and abs(y - start[1]) < 1e-3
+    assert abs(math.remainder(yaw - start[2], math.tau)) < 1e-3
+    r = ranges(ros.echo("/scan", count=1)[0]["msg"])
+    assert len(r) == 640
+    walls = [v for v in r if math.isfinite(v)]
+    assert len(walls) > 320 and min(walls) > 0.45  # walls in view, none too close
 
 
 def bad_world_cases(tmp_path):
