@@ -19,8 +19,8 @@ def build(rng):
     hall = layout.interior(0.0, 0.0, width, height)
     rows, racks_end = add_racks(rng, layout, width, height)
     pillars = add_pillars(rng, layout, hall, racks_end)
-    for _ in range(rng.randint(2, 5)):  # pallets along the walls
-        layout.place_box(rng, hall, (1.2, 1.0), pick(rng, 0.3, 1.5, 0.3), WOOD, gap=1.0)
+    for _ in range(rng.randint(2, 5)):  # pallet stacks along the walls, above the laser
+        layout.place_box(rng, hall, (1.2, 1.0), pick(rng, 0.6, 1.5, 0.3), WOOD, gap=1.0)
     return layout, f"rack rows: {rows}, pillars: {pillars}"
 
 
