@@ -11,8 +11,10 @@ if [ -f build/CMakeCache.txt ] && ! grep -q "^PYTHON_EXECUTABLE:FILEPATH=/usr/bi
 fi
 jobs=${ROSBOOK_JOBS:-$(nproc)}
 log=$(mktemp)
+# devel space, the C++ tests, and the install space (catkin_ws/install, tested by the suite).
 if ! catkin_make -j"$jobs" -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=Release >"$log" 2>&1 \
-   || ! catkin_make -j"$jobs" tests >>"$log" 2>&1; then
+   || ! catkin_make -j"$jobs" tests >>"$log" 2>&1 \
+   || ! catkin_make -j"$jobs" install >>"$log" 2>&1; then
   tail -n 60 "$log"
   echo "build: FAILED (full log: $log)" >&2
   exit 1
