@@ -94,19 +94,34 @@ def test_range_ahead_matches_ground_truth_distance_to_the_wall(ros, tmp_path, st
     assert all(abs(v - truth) <= 0.06 for v in printed), (printed, truth)
 
 
+def visited_cells(truth, size=0.5):
+    """Distinct size x size squares the robot's centre passed through."""
+    return {(math.floor(x / size), math.floor(y / size)) for _, x, y, _ in truth}
+
+
+@pytest.mark.slow
 @pytest.mark.parametrize("world", ["playground", "maze"])
-def test_wander_five_minutes_covers_ground_without_bumping(ros, world):
-    minutes = 5.0
+def test_wander_covers_ground_without_bumping(ros, world):
+    # 100 s of sim time is ten times the longest manoeuvre (a turn away from a wall takes a few
+    # seconds), so a wanderer that works has crossed the room several times by then.
+    sim_seconds = 100.0
     start_sim(ros, launch="wander.launch", pkg="wanderbot", world=world, speed=SIM_SPEED, seed=1)
     ros.wait_for_topic(CMD)
-    probe = ros.probe([TRUTH, BUMPER], duration=1500, timeout=1500)
+    probe = ros.probe([TRUTH, BUMPER], duration=900, timeout=900)
     unpause(ros)
-    wait_sim_seconds(ros, probe, minutes * 60, TRUTH, timeout=1500)
+    wait_sim_seconds(ros, probe, sim_seconds, TRUTH, timeout=900)
     messages = probe.stop()
     truth = poses(messages)
     t0, t1 = truth[0][0], truth[-1][0]
     travelled = path_length(truth)
     in_contact = contact_time(messages, t0, t1) / (t1 - t0)
-    print(f"wander {world}: {travelled:.1f} m in {t1 - t0:.0f} s, contact {in_contact:.1%}")
-    assert travelled >= 30.0
+    cells = visited_cells(truth)
+    span = t1 - t0
+    print(f"wander {world}: {travelled:.1f} m, {len(cells)} cells in {span:.0f} s")
+    print(f"  contact {in_contact:.1%}")
+    # At 0.4 m/s it would drive 40 m; turning in place and a node that lags the simulator
+    # on a loaded machine (the base stops 0.6 s after the last command) cost part of that.
+    # Half of it again is a wide margin that still fails a robot that stalls or spins.
+    assert travelled >= 0.05 * (t1 - t0), travelled
+    assert len(cells) >= 12, sorted(cells)  # not circling in one spot: 3 m² and more
     assert in_contact < 0.05
