@@ -2,14 +2,16 @@
 
 import re
 import subprocess
-import time
 from pathlib import Path
 
 import pytest
 from roskit import DEBIAN_PYTHON, free_port, ros_environment
 
-SIM_CLOCK = Path(__file__).resolve().parent / "sim_clock.py"
-SCRIPTS = Path(__file__).resolve().parents[2] / "catkin_ws" / "src" / "basics" / "scripts"
+HERE = Path(__file__).resolve().parent
+ACTION_CLOCK = HERE / "action_clock.py"
+SCRIPTS = HERE.parents[1] / "catkin_ws" / "src" / "basics" / "scripts"
+POLL = 0.01  # fancy_action_server.py's nap between preemption checks (its time resolution)
+LAG = 0.1  # basics.timer.TICK_LAG: feedback k goes out at k + LAG seconds
 
 FEEDBACK = re.compile(
     r"^\[Feedback\] Time elapsed: (\S+)\n\[Feedback\] Time remaining: (\S+)$", re.M
@@ -21,83 +23,104 @@ RESULT = re.compile(
 )
 
 
-def fancy_client(ros, *args):
+def timer_on_sim_time(ros, master, server="fancy_action_server.py", *clock_options):
+    """use_sim_time, the action's lock-step /clock (action_clock.py: it holds still until a
+    goal has started, then jumps from feedback to feedback and waits for each), then the
+    server, which takes goals once it has the clock."""
+    ros.run(["rosparam", "set", "/use_sim_time", "true"])
+    out = ros.workdir / f"action-clock-{ros._log_index + 1:02d}.jsonl"
+    cmd = [DEBIAN_PYTHON, str(ACTION_CLOCK), "--out", str(out), "--poll", str(POLL)]
+    clock = ros.start(cmd + [str(o) for o in clock_options], name="action_clock")
+    if server:
+        ros.start(["rosrun", "basics", server])
+        master.wait_for_topic("timer/result")
+    return clock
+
+
+def fancy_client(ros, clock, *args):
     """Run fancy_action_client.py; return (feedback [(elapsed, remaining)], result tuple)."""
-    out = ros.run(["rosrun", "basics", "fancy_action_client.py", *args], timeout=60).stdout
+    out = ros.run(["rosrun", "basics", "fancy_action_client.py", *args], timeout=120).stdout
+    assert clock.wait(timeout=60) == 0, ros.output(clock)
     feedback = [(float(e), float(r)) for e, r in FEEDBACK.findall(out)]
     (state, status, elapsed, updates), *_ = RESULT.findall(out)
     return feedback, (int(state), status, float(elapsed), int(updates))
 
 
-# The fancy server, shared by the tests that use `shared_graph` (goals run one at a time).
-SHARED_NODES = [["rosrun", "basics", "fancy_action_server.py"]]
-SHARED_TOPICS = ["timer/result"]
-
-
-def test_five_second_goal_succeeds_with_five_feedbacks(shared_graph):
-    feedback, (state, status, elapsed, updates) = fancy_client(shared_graph)
-    assert (state, status, updates) == (3, "Timer completed successfully", 5)
-    assert elapsed == pytest.approx(5.0, abs=0.25)
-    assert len(feedback) == 5
+def assert_feedback_once_a_second(feedback, goal):
+    """Feedback k at k + LAG s (k >= 1), at most one server nap late; remaining = goal - elapsed."""
     for k, (e, r) in enumerate(feedback):
-        assert e == pytest.approx(k, abs=0.3)  # once a second
-        assert e + r == pytest.approx(5.0, abs=1e-3)
+        due = k + LAG if k else 0.0
+        assert due - 1e-6 <= e <= due + POLL + 1e-6, (k, e)
+        assert e + r == pytest.approx(goal, abs=1e-6)
 
 
-def test_cancel_after_three_seconds_preempts(shared_graph):
-    feedback, (state, status, elapsed, updates) = fancy_client(shared_graph, "--preempt-after", "3")
+def test_five_second_goal_succeeds_with_five_feedbacks(ros, master):
+    clock = timer_on_sim_time(ros, master, "fancy_action_server.py", "--goal", 5)
+    feedback, (state, status, elapsed, updates) = fancy_client(ros, clock)
+    assert (state, status, updates) == (3, "Timer completed successfully", 5)
+    assert 5.0 - 1e-6 <= elapsed <= 5.0 + POLL + 1e-6
+    assert len(feedback) == 5
+    assert_feedback_once_a_second(feedback, 5.0)
+
+
+def test_cancel_after_three_seconds_preempts(ros, master):
+    options = ["--goal", 5, "--cancel-at", 3]
+    clock = timer_on_sim_time(ros, master, "fancy_action_server.py", *options)
+    feedback, (state, status, elapsed, updates) = fancy_client(ros, clock, "--preempt-after", "3")
     assert (state, status) == (2, "Timer preempted")
-    assert elapsed == pytest.approx(3.0, abs=0.25)
+    # The cancel goes out at 3 s of sim time; the server notices it by the end of its nap,
+    # well before feedback 3 would go out at 3 + LAG.
+    assert 3.0 - 1e-6 <= elapsed <= 3.0 + 2 * POLL + 1e-6
     assert updates == 3 and len(feedback) == 3
+    assert_feedback_once_a_second(feedback, 5.0)
 
 
-def test_too_long_and_negative_goals_abort_at_once(shared_graph):
-    started = time.monotonic()
-    feedback, (state, status, elapsed, updates) = fancy_client(shared_graph, "--duration", "500")
+def test_too_long_and_negative_goals_abort_at_once(ros, master):
+    clock = timer_on_sim_time(ros, master, "fancy_action_server.py", "--goal", 500)
+    feedback, (state, status, elapsed, updates) = fancy_client(ros, clock, "--duration", "500")
     assert (state, status, updates, feedback) == (4, "Timer aborted due to too-long wait", 0, [])
-    assert elapsed < 0.5
-    assert time.monotonic() - started < 30  # not 500 s
+    assert elapsed == 0.0  # the clock held still: the server did not wait at all
 
-    feedback, (state, status, _, updates) = fancy_client(shared_graph, "--duration", "-2")
-    assert (state, updates, feedback) == (4, 0, [])
+    clock = timer_on_sim_time(ros, master, None, "--goal", -2, "--start", 2000)
+    feedback, (state, status, elapsed, updates) = fancy_client(ros, clock, "--duration", "-2")
+    assert (state, updates, feedback, elapsed) == (4, 0, [], 0.0)
     assert status == "Timer aborted due to negative wait (-2.000000 s)"
 
 
 def test_timer_runs_on_sim_time(ros, master):
-    """Under /use_sim_time both nodes follow /clock: a 50 s goal at 20x takes about 2.5 s."""
-    ros.run(["rosparam", "set", "/use_sim_time", "true"])
-    ros.start([DEBIAN_PYTHON, str(SIM_CLOCK), "--start", "1000", "--step", "0.2"])
-    master.wait_for_topic("clock")
-    ros.start(["rosrun", "basics", "fancy_action_server.py"])
-    master.wait_for_topic("timer/result")
-    started = time.monotonic()
-    feedback, (state, _, elapsed, updates) = fancy_client(ros, "--duration", "50")
-    wall = time.monotonic() - started
+    """Under /use_sim_time both nodes follow /clock: a 50 s goal's feedback comes once a
+    simulated second and it ends after 50 simulated seconds, though the clock jumps from
+    one feedback to the next: a wall-clock server could not match them."""
+    clock = timer_on_sim_time(ros, master, "fancy_action_server.py", "--goal", 50)
+    feedback, (state, _, elapsed, updates) = fancy_client(ros, clock, "--duration", "50")
     assert (state, updates, len(feedback)) == (3, 50, 50)
-    assert elapsed == pytest.approx(50.0, abs=0.5)
-    # Once a simulated second (the clock moves in 0.2 s steps).
-    assert [round(e) for e, _ in feedback] == list(range(50))
-    assert wall < 45, f"{wall:.1f} s of wall time for 50 s of sim time: /clock not followed"
+    assert 50.0 - 1e-6 <= elapsed <= 50.0 + POLL + 1e-6
+    assert_feedback_once_a_second(feedback, 50.0)
 
 
-def test_simple_client_waits_for_the_server_then_gets_five_seconds(ros):
+def test_simple_client_waits_for_the_server_then_gets_five_seconds(ros, master):
+    # The clock runs until the client has given up its first 1 s wait for the server, then
+    # holds until the goal has started and jumps to its end.
+    hold = ros.workdir / "hold-the-clock"
+    clock = timer_on_sim_time(ros, master, None, "--goal", 5, "--simple", "--free-until", hold)
     client = ros.start(["rosrun", "basics", "simple_action_client.py"])
     ros.wait_for(
         lambda: "waiting for the action server /timer" in ros.output(client),
         timeout=60,
         what="the client to wait",
     )
+    hold.touch()
     assert client.poll() is None
     ros.start(["rosrun", "basics", "simple_action_server.py"])
     assert client.wait(timeout=60) == 0
+    assert clock.wait(timeout=60) == 0, ros.output(clock)
     elapsed = float(re.search(r"^Time elapsed: (\S+)$", ros.output(client), re.M).group(1))
-    assert 5.0 <= elapsed < 5.25
+    assert 5.0 - 1e-6 <= elapsed <= 5.0 + 1e-6  # the clock held still at its end
 
 
 def test_simple_server_aborts_a_negative_goal(ros, master):
-    ros.start(["rosrun", "basics", "simple_action_server.py"])
-    master.wait_for_topic("timer/result")
-    feedback, (state, status, _, updates) = fancy_client(ros, "--duration", "-1")
+    clock = timer_on_sim_time(ros, master, "simple_action_server.py", "--goal", -1, "--simple")
+    feedback, (state, status, _, updates) = fancy_client(ros, clock, "--duration", "-1")
     assert (state, updates, feedback) == (4, 0, [])
     assert status.startswith("Timer aborted due to negative wait")
 

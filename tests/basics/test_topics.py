@@ -2,17 +2,33 @@
 naming: remapping, __ns, __name."""
 
 import re
-import time
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+import lockstep  # noqa: E402
 
 
 def test_counter_publishes_consecutive_integers_at_2_hz(ros, master):
+    """One message per 0.5 s of sim time, on a /clock that waits for each message (lockstep):
+    the count n goes out at the first tick at or after its deadline n * 0.5 s from start."""
+    ros.run(["rosparam", "set", "/use_sim_time", "true"])
+    period, ticks = 0.5, 40
+    clock = lockstep.start(ros, "counter", period, ticks)
     ros.start(["rosrun", "basics", "topic_publisher.py"])
-    master.wait_for_topic("counter")
-    messages = ros.echo("counter", count=6, timeout=30)
+    messages = lockstep.finish(ros, clock)
     values = [m["msg"]["data"] for m in messages]
-    assert values == list(range(values[0], values[0] + 6))
-    period = (messages[-1]["wall"] - messages[0]["wall"]) / (len(messages) - 1)
-    assert 0.45 <= period <= 0.55, f"period {period:.3f} s, expected 0.5 s (2 Hz)"
+    assert values == list(range(values[0], values[0] + len(values)))
+    # rospy.Rate may send its first counts at once (started before the first /clock): from
+    # count 3 on, each count's tick minus its deadline is the same offset (up to the slack).
+    steady = [m for m in messages if m["msg"]["data"] >= 3]
+    assert len(steady) >= ticks - 3
+    offsets = [round((m["clock"] - 1000.0) / period) - m["msg"]["data"] for m in steady]
+    assert max(offsets) - min(offsets) <= lockstep.SLACK_TICKS, offsets
+    # The rate: counts per sim second over the steady run, exact within the slack.
+    span = steady[-1]["clock"] - steady[0]["clock"]
+    counts = steady[-1]["msg"]["data"] - steady[0]["msg"]["data"]
+    assert abs(span - counts * period) <= lockstep.SLACK_TICKS * period, (span, counts)
 
     info = ros.run(["rostopic", "info", "counter"]).stdout
     assert "Type: std_msgs/Int32" in info
@@ -39,7 +55,6 @@ def test_subscriber_prints_what_arrives_on_counter(ros, master):
 def test_late_subscriber_gets_the_last_latched_message(ros):
     pub = ros.start(["rosrun", "basics", "latched_publisher.py", "_count:=3"])
     ros.wait_for(lambda: "published 3 message(s)" in ros.output(pub), 60, "publishing")
-    time.sleep(1.0)  # well after the last message went out
     echoed = ros.run(["rostopic", "echo", "-n", "1", "latched"], timeout=60).stdout
     assert echoed.splitlines()[0] == 'data: "latched message 3 of 3"'
 

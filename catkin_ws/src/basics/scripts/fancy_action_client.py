@@ -9,6 +9,7 @@ The book's three runs, without editing the code:
 
 import argparse
 import sys
+import time
 
 import rospy
 from basics import timer
@@ -46,12 +47,16 @@ def main():
 
     goal = TimerGoal()
     goal.time_to_wait = rospy.Duration.from_sec(args.duration)
+    while rospy.get_rostime().is_zero() and not rospy.is_shutdown():
+        time.sleep(0.01)  # sim time: wait for /clock, or the delay below counts from 0
+    sent = rospy.get_rostime()
     client.send_goal(goal, feedback_cb=feedback_cb)
     if args.preempt_after is not None:
         # The book sleeps, then cancels; waiting for the result instead ends early when the
-        # goal finishes first (a zero timeout would mean "forever", hence the check).
-        patience = rospy.Duration.from_sec(args.preempt_after)
-        if args.preempt_after == 0 or not client.wait_for_result(patience):
+        # goal finishes first. The delay counts from sending the goal, however long sending
+        # took (a zero timeout would mean "forever", hence the check).
+        patience = rospy.Duration.from_sec(args.preempt_after) - (rospy.get_rostime() - sent)
+        if patience <= rospy.Duration(0) or not client.wait_for_result(patience):
             client.cancel_goal()
 
     if not client.wait_for_result():

@@ -6,6 +6,8 @@ goal ("Timer preempted"); a goal over 60 s is aborted at once ("Timer aborted du
 too-long wait"), and so is a negative one. Time is ROS time (follows /clock under sim time).
 """
 
+import time
+
 import actionlib
 import rospy
 from basics import timer
@@ -53,6 +55,9 @@ def main():
         else:
             server.set_succeeded(result_of(elapsed, updates), timer.SUCCEEDED)
 
+    # Under sim time, take goals only once /clock has come: a goal must not be timed from 0.
+    while rospy.get_rostime().is_zero() and not rospy.is_shutdown():
+        time.sleep(0.01)
     server = actionlib.SimpleActionServer("timer", TimerAction, do_timer, False)
     server.start()
     rospy.spin()

@@ -5,6 +5,8 @@ Waits for the goal's time_to_wait, then succeeds with time_elapsed and updates_s
 A negative wait is aborted. Time is ROS time, so it follows /clock under use_sim_time.
 """
 
+import time
+
 import actionlib
 import rospy
 from basics.msg import TimerAction, TimerResult
@@ -29,6 +31,9 @@ def main():
         result.updates_sent = 0
         server.set_succeeded(result)
 
+    # Under sim time, take goals only once /clock has come: a goal must not be timed from 0.
+    while rospy.get_rostime().is_zero() and not rospy.is_shutdown():
+        time.sleep(0.01)
     # auto_start=False: the book's advice, avoids a start-up race.
     server = actionlib.SimpleActionServer("timer", TimerAction, do_timer, False)
     server.start()
