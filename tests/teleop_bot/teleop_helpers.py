@@ -1,9 +1,12 @@
 """Shared bits of the teleop_bot integration tests."""
 
+import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 SEND_KEYS = ["/usr/bin/python3", str(HERE / "send_keys.py")]
+sys.path.insert(0, str(HERE.parent / "tools"))
+import lockstep  # noqa: E402, F401  (re-exported for the tests)
 
 
 def twists(messages):
@@ -11,14 +14,14 @@ def twists(messages):
     return [(m["ros"], m["msg"]["linear"]["x"], m["msg"]["angular"]["z"]) for m in messages]
 
 
-def rate_hz(times):
-    if len(times) < 2 or times[-1] <= times[0]:
-        return 0.0
-    return (len(times) - 1) / (times[-1] - times[0])
+def clock_twists(records):
+    """(sim time, linear x, angular z) per Twist a lock-step clock recorded (lockstep.py)."""
+    return [(r["clock"], r["msg"]["linear"]["x"], r["msg"]["angular"]["z"]) for r in records]
 
 
-def values_between(samples, start, end):
-    return [(lin, ang) for t, lin, ang in samples if start <= t < end]
+def ticks_between(records, first, last):
+    """How many messages arrived at ticks first..last of a lock-step clock."""
+    return sum(1 for r in records if first <= r["tick"] <= last)
 
 
 def start_in_terminal(ros, cmd, name):

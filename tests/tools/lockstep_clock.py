@@ -190,9 +190,18 @@ class SimulatorLockstep(Lockstep):
             answer = self.step()
             if not answer.success:
                 raise LockstepError(f"{self.step.resolved_name}: {answer.message}")
+        # "time 12.340000": the simulator's time after the step (to the microsecond)
+        sim_ns = round(float(answer.message.split()[-1]) * 1e6) * 1000
+        with self.cond:
+            self.clock_ns = sim_ns
 
     def clock_subscribers_connected(self):
         return True  # the simulator's /clock, which the node finds by itself
+
+    def connect(self):
+        clock = rospy.wait_for_message("/clock", Clock, timeout=self.timeout)
+        self.clock_ns = self.start_ns = clock.clock.to_nsec()
+        super().connect()
 
 
 def parse_at(text):
