@@ -14,14 +14,18 @@ SLACK_TICKS = 2
 
 def start(ros, gate, period, ticks, *options, pass_fds=(), name="lockstep_clock"):
     """Start lockstep_clock.py (it waits for the node); returns the process, with .out."""
+    args = ["--gate", gate, "--period", period, "--ticks", ticks, *options]
+    return launch(ros, [PYTHON, str(SCRIPT), *map(str, args)], name, pass_fds)
+
+
+def launch(ros, cmd, name, pass_fds=()):
+    """Start a lock-step clock script `cmd` (given --out here) against the graph `ros`."""
     ros._log_index += 1
     index = ros._log_index
     out = ros.workdir / f"{index:02d}-{name}.jsonl"
-    cmd = [PYTHON, str(SCRIPT), "--out", str(out), "--gate", gate]
-    cmd += ["--period", str(period), "--ticks", str(ticks), *map(str, options)]
     log_path = ros.workdir / f"{index:02d}-{name}.log"
     proc = subprocess.Popen(
-        cmd,
+        [*cmd, "--out", str(out)],
         stdout=open(log_path, "w"),
         stderr=subprocess.STDOUT,
         stdin=subprocess.DEVNULL,

@@ -156,7 +156,10 @@ class Lockstep:
 
     def run(self, ticks, on_tick=None):
         """Advance `ticks` ticks; on_tick(tick) injects inputs after the tick's message and
-        returns how many more gate messages they cause."""
+        returns how many more gate messages they cause (on_tick(0): before the first tick,
+        answers not awaited)."""
+        if on_tick is not None:
+            on_tick(0)
         for _ in range(ticks):
             target = self.arrived() + 1  # counted before the tick: the node may be quick
             with self.cond:

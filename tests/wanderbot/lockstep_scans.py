@@ -1,0 +1,63 @@
+#!/usr/bin/python3
+"""Test helper (not a test): a lock-step /clock (tests/tools/lockstep_clock.py) gated on
+`cmd_vel` that also publishes one synthetic LaserScan per tick on `scan`, following a
+schedule PATTERN@SECONDS ... in sim seconds (patterns: fake_scan.py's). The scan for sim time
+T goes out once the node has published at T, so the node drives on it from the next tick."""
+
+import argparse
+import sys
+from pathlib import Path
+
+import rospy
+from sensor_msgs.msg import LaserScan
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+sys.path.insert(0, str(HERE.parent / "tools"))
+from fake_scan import N, ranges  # noqa: E402
+from lockstep_clock import Lockstep, LockstepError  # noqa: E402
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--period", type=float, default=0.1)
+    parser.add_argument("--ticks", type=int, required=True)
+    parser.add_argument("plan", nargs="+", help="PATTERN@SECONDS")
+    args = parser.parse_args(rospy.myargv()[1:])
+    plan = []
+    for item in args.plan:
+        pattern, _, at = item.partition("@")
+        ranges(pattern)  # an unknown pattern fails here
+        plan.append((float(at), pattern))
+
+    rospy.init_node("lockstep_scans", disable_signals=True)
+    clock = Lockstep("cmd_vel", args.period, out=args.out)
+    pub = rospy.Publisher("scan", LaserScan, queue_size=10)
+    clock.inputs = [pub]
+
+    def on_tick(tick):
+        now = tick * args.period
+        current = [p for at, p in plan if at <= now + 1e-9]
+        scan = LaserScan()
+        secs, nsecs = divmod(clock.clock_ns, 1_000_000_000)
+        scan.header.stamp = rospy.Time(secs, nsecs)
+        scan.header.frame_id = "camera_depth_frame"
+        scan.angle_min, scan.angle_max = -0.5, 0.5
+        scan.angle_increment = 1.0 / (N - 1)
+        scan.range_min, scan.range_max = 0.45, 8.0
+        scan.ranges = ranges(current[-1] if current else "clear")
+        pub.publish(scan)
+        return 0
+
+    try:
+        clock.connect()
+        clock.run(args.ticks, on_tick)
+    except LockstepError as error:
+        print(f"lockstep_scans: {error}", file=sys.stderr)
+        return 4
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
