@@ -1,5 +1,6 @@
-"""Shared fixtures: `ros` gives each test its own roscore on a free port."""
+"""Shared fixtures: `ros` gives each test its own roscore on a free port. Also the quick tier."""
 
+import os
 import sys
 from pathlib import Path
 
@@ -17,3 +18,42 @@ def ros(tmp_path):
         yield graph
     finally:
         graph.close()
+
+
+# -- the quick tier (`make test-fast`) ---------------------------------------------------------
+# For the edit-test loop: every unit test (no ROS master), every gtest, and these integration
+# tests, one or two per package, none simulating more than 30 sim s. ROSBOOK_TIER=fast selects
+# them; a name here that matches no test fails the run, so the list cannot rot silently.
+FAST_INTEGRATION = (
+    "tests/test_workspace.py",
+    "tests/test_book_aliases.py::test_rosrun_rospy_tutorials_talker_and_listener",
+    "tests/basics/test_services.py::test_word_count_from_rosservice_and_service_client",
+    "tests/basics/test_messages.py",
+    "tests/bullet_turtlebot/test_simulator_launch.py::test_turtlebot_in_stage_launch_brings_up_the_maze",
+    "tests/map_server/test_map_server.py::test_books_command_from_maps_folder",
+    "tests/launch/test_launch_files.py::test_the_table_names_every_launch_file",
+    "tests/launch/test_launch_files.py::test_launch_file_brings_up_its_nodes[catkin_ws/src/rosbook_demo/launch/mapping_live.launch]",
+)
+
+
+def _is_fast(nodeid):
+    if nodeid.startswith("catkin_ws/src/") or nodeid.startswith("tests/test_cpp_units.py"):
+        return True
+    return any(_is_fast_match(nodeid, name) for name in FAST_INTEGRATION)
+
+
+def pytest_collection_modifyitems(config, items):
+    if os.environ.get("ROSBOOK_TIER") != "fast":
+        return
+    unmatched = [
+        name for name in FAST_INTEGRATION if not any(_is_fast_match(i.nodeid, name) for i in items)
+    ]
+    if unmatched:
+        raise pytest.UsageError(f"FAST_INTEGRATION names no collected test: {unmatched}")
+    keep = [item for item in items if _is_fast(item.nodeid)]
+    config.hook.pytest_deselected(items=[item for item in items if not _is_fast(item.nodeid)])
+    items[:] = keep
+
+
+def _is_fast_match(nodeid, name):
+    return nodeid == name or nodeid.startswith(name + "::")

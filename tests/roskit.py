@@ -26,8 +26,10 @@ def free_port():
         return sock.getsockname()[1]
 
 
-def ros_environment(port):
-    env = dict(os.environ)
+def ros_environment(port, base=None):
+    """The environment for nodes of a master on `port`: `base` (default: this process's, set
+    up by devel/setup.bash) with the master's address and test-friendly logging."""
+    env = dict(os.environ if base is None else base)
     if "ROS_PACKAGE_PATH" not in env:
         raise RuntimeError(
             "ROS environment missing: run the tests with `make test`, or "
@@ -45,10 +47,10 @@ def ros_environment(port):
 class RosGraph:
     """A roscore on a free port plus the processes a test starts against it."""
 
-    def __init__(self, workdir):
+    def __init__(self, workdir, base_env=None):
         self.workdir = Path(workdir)
         self.port = free_port()
-        self.env = ros_environment(self.port)
+        self.env = ros_environment(self.port, base_env)
         self.procs = []
         self._log_index = 0
         self.core = self.start(["roscore", "-p", str(self.port)], name="roscore")
