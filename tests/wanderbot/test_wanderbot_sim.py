@@ -105,6 +105,9 @@ def test_wander_covers_ground_without_bumping(ros, world):
     # 100 s of sim time is ten times the longest manoeuvre (a turn away from a wall takes a few
     # seconds), so a wanderer that works has crossed the room several times by then.
     sim_seconds = 100.0
+    # The simulator holds its clock for wander.py if it lags (loaded machine): 0.3 sim s is
+    # three of its 10 Hz periods, under the base's 0.6 s command timeout.
+    ros.run(["rosparam", "set", "/simulator/wait_for_commands", "0.3"])
     start_sim(ros, launch="wander.launch", pkg="wanderbot", world=world, speed=SIM_SPEED, seed=1)
     ros.wait_for_topic(CMD)
     probe = ros.probe([TRUTH, BUMPER], duration=900, timeout=900)

@@ -127,6 +127,11 @@ void RosSimulator::load_parameters() {
     ROS_WARN("~speed must be >= 0 (0 = as fast as possible); using 1.0");
     speed_ = 1.0;
   }
+  command_lead_ = param(pnh_, "wait_for_commands", 0.0);
+  if (!(command_lead_ >= 0) || !std::isfinite(command_lead_)) {
+    ROS_WARN("~wait_for_commands must be >= 0 sim seconds (0 = off); using 0");
+    command_lead_ = 0.0;
+  }
   paused_ = param(pnh_, "start_paused", false);
   sim_.set_time(param(pnh_, "start_time", 1.0));
   if (sim_.now() <= 0) sim_.set_time(1.0);  // /clock must never read 0
@@ -183,6 +188,8 @@ void RosSimulator::on_velocity(const std::string& topic, int mux_input, const ge
     }
     return;
   }
+  last_command_sim_ = sim_.now();
+  last_command_wall_ = ros::WallTime::now();
   if (mux_input >= 0 && !mux_.offer(mux_input, sim_.now())) return;  // a higher priority input owns the base
   sim_.command(msg.linear.x, msg.angular.z);
 }
@@ -371,6 +378,15 @@ void RosSimulator::advance() {
   if (due(rates_.camera)) publish_cameras();
 }
 
+// With ~wait_for_commands, a driver that lags (a loaded machine, a slow planner) holds the
+// clock instead of watching the base stop under it: the clock stays within the lead of its
+// newest command. A driver that goes quiet for a wall second on purpose no longer holds it.
+bool RosSimulator::waiting_for_driver() const {
+  if (!(command_lead_ > 0) || last_command_sim_ < 0) return false;
+  if (sim_.now() - last_command_sim_ < command_lead_) return false;
+  return (ros::WallTime::now() - last_command_wall_).toSec() < kDriverQuietWallSeconds;
+}
+
 int RosSimulator::run() {
   ROS_INFO("simulator: world %s, %zu solids, robot at (%.2f, %.2f, %.2f), speed %g%s", world_source_.c_str(),
            sim_.world().solids().size(), sim_.pose().x, sim_.pose().y, sim_.pose().yaw, speed_,
@@ -395,6 +411,12 @@ int RosSimulator::run() {
       }
       ros::WallDuration(0.002).sleep();
       anchor_wall = ros::WallTime::now();
+      anchor_sim = sim_.now();
+      continue;
+    }
+    if (waiting_for_driver()) {
+      ros::WallDuration(0.001).sleep();
+      anchor_wall = ros::WallTime::now();  // a wait is not lag to make up afterwards
       anchor_sim = sim_.now();
       continue;
     }

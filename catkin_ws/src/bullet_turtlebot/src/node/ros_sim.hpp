@@ -42,6 +42,8 @@ class RosSimulator {
   void on_set_pose(const geometry_msgs::Pose2D& msg);
   ros::Time stamp() const { return ros::Time(sim_.now()); }
   bool due(double rate) const;
+  bool waiting_for_driver() const;  // ~wait_for_commands: hold the clock for a lagging driver
+  static constexpr double kDriverQuietWallSeconds = 1.0;
 
   ros::NodeHandle nh_, pnh_;
   Simulation sim_;
@@ -51,6 +53,11 @@ class RosSimulator {
   LaserConfig laser_;
   CameraConfig camera_;
   double speed_ = 1.0;
+  // Pacing by the driver (~wait_for_commands): sim seconds the clock may run ahead of the
+  // newest velocity command (0: never waits), and when that command came.
+  double command_lead_ = 0.0;
+  double last_command_sim_ = -1.0;
+  ros::WallTime last_command_wall_;
   double huge_linear_ = 10.0, huge_angular_ = 20.0;
   bool publish_static_tf_ = true;
   bool paused_ = false;
