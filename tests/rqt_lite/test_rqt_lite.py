@@ -3,11 +3,13 @@
 import csv
 import os
 import shutil
+import xmlrpc.client
 from pathlib import Path
 
-import pytest
-
+HERE = Path(__file__).resolve().parent
+PYTHON = "/usr/bin/python3"
 TWIST = "{linear: {x: 0.5}, angular: {z: -0.3}}"
+CALLER = "/rqt_lite_tests"
 
 
 def read_csv(path):
@@ -31,33 +33,61 @@ def test_rqt_plot_lands_on_path_from_devel_bin():
         assert Path(found).parent.name == "bin" and os.access(found, os.X_OK)
 
 
+def node_of(ros, topic, prefix, publishers=False):
+    """The node (name, XML-RPC proxy) whose name starts with `prefix` that subscribes to (or
+    publishes) `topic`."""
+    master = xmlrpc.client.ServerProxy(ros.env["ROS_MASTER_URI"])
+    _, _, state = master.getSystemState(CALLER)
+    nodes = dict(state[0 if publishers else 1]).get(topic, [])
+    name = next(n for n in nodes if n.startswith(prefix))
+    _, _, uri = master.lookupNode(CALLER, name)
+    return name, xmlrpc.client.ServerProxy(uri)
+
+
+def counts(node, topic, publishers=False):
+    """Messages per connection of `node` on `topic`, from its getBusStats."""
+    _, _, (pub_stats, sub_stats, _) = node.getBusStats(CALLER)
+    if publishers:
+        conns = next((c for t, _, c in pub_stats if t == topic), [])
+        return [c[2] for c in conns if c[3]]
+    conns = next((c for t, c in sub_stats if t == topic), [])
+    return [c[2] for c in conns if c[4]]
+
+
 def test_rqt_plot_book_fields_to_png_with_samples(ros, tmp_path):
-    publish_cmd_vel(ros)
+    # Sim time: tick_publisher.py sends one Twist per 0.1 s tick of its /clock, once
+    # rqt_plot is connected; rqt_plot samples each on the ROS (sim) time axis.
+    ros.run(["rosparam", "set", "/use_sim_time", "true"])
     png, samples = tmp_path / "plot.png", tmp_path / "samples.csv"
-    done = ros.run(
-        [
-            "rqt_plot",
-            "cmd_vel/linear/x",
-            "cmd_vel/angular/z",
-            "--output",
-            str(png),
-            "--duration",
-            "3",
-            "--csv",
-            str(samples),
-        ],
-        timeout=90,
+    fields = ["cmd_vel/linear/x", "cmd_vel/angular/z"]
+    count = 30
+    ros.start([PYTHON, str(HERE / "tick_publisher.py"), "--count", str(count)])
+    ros.wait_for_topic("cmd_vel")
+    plot = ros.start(
+        ["rqt_plot", *fields, "--output", png, "--duration", "600", "--csv", samples],
+        name="rqt_plot",
     )
-    assert "wrote" in done.stdout
+
+    def received():
+        try:
+            return counts(node_of(ros, "/cmd_vel", "/rqt_plot")[1], "/cmd_vel")
+        except StopIteration:  # not subscribed yet
+            return []
+
+    ros.wait_for(lambda: received() == [count], 90, f"rqt_plot to receive {count} Twists")
+    assert ros.stop(plot, timeout=60) == 0, ros.output(plot)  # Ctrl-C: write and exit
+    assert "rqt_plot: wrote" in ros.output(plot)
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     series = read_csv(samples)
     assert set(series) == {"/cmd_vel/linear/x", "/cmd_vel/angular/z"}
     assert {v for _, v in series["/cmd_vel/linear/x"]} == {0.5}
     assert {v for _, v in series["/cmd_vel/angular/z"]} == {-0.3}
-    # 10 Hz for about 3 s (the subscription starts a little after the tool)
+    # Every message (the last may still be in rqt_plot's callback when Ctrl-C comes)...
     times = [t for t, _ in series["/cmd_vel/linear/x"]]
-    assert 15 <= len(times) <= 32
-    assert (len(times) - 1) / (times[-1] - times[0]) == pytest.approx(10.0, rel=0.15)
+    assert count - 1 <= len(times) <= count
+    # ... on the ROS time axis: sim seconds on the clock's 0.1 s ticks since the first sample
+    assert times[0] == 0.0 and times == sorted(times) and times[-1] <= count * 0.1
+    assert all(abs(t * 10 - round(t * 10)) < 1e-6 for t in times), times
 
 
 def test_rqt_plot_array_index_and_svg_via_rosrun(ros, tmp_path):
