@@ -3,8 +3,9 @@ against a known wall, tf, cameras (REP 118). Real roscore and simulator node."""
 
 import math
 import struct
+import time
 
-from simkit import ranges, secs, start_simulator, wall_ahead, write_pgm
+from simkit import call_service, ranges, secs, start_simulator, wall_ahead, write_pgm
 
 CAMERA_X = -0.087  # camera_depth_frame in base_footprint
 
@@ -26,24 +27,44 @@ def rate(records, topic):
 def test_rates_in_sim_time_and_stamps(ros, tmp_path):
     # Real time here, so that the Python probe keeps up with 100 clock messages per second.
     start_simulator(ros, wall_ahead(tmp_path, 3.0), speed=1.0)
-    probe = ros.probe(["/scan", "/odom", "/clock", "/base_pose_ground_truth"], duration=4.0)
-    records = probe.wait(30)
-    scan_hz, scan_stamps = rate(records, "/scan")
-    odom_hz, _ = rate(records, "/odom")
-    clock_hz, clocks = rate(records, "/clock")
-    truth_hz, _ = rate(records, "/base_pose_ground_truth")
+    topics = ["/scan", "/odom", "/clock", "/base_pose_ground_truth"]
+    started = time.time()  # whatever the probe receives was published after this
+    probe = ros.probe(topics, duration=300, timeout=300)
+
+    def clocks_so_far():
+        return [secs(r["msg"]["clock"]) for r in probe.messages() if r["topic"] == "/clock"]
+
+    # 3 s of sim time (30 scans, 150 odometry messages), however long it takes; then pause
+    # (the paused simulator repeats its time: the probe then has the clock's last value).
+    ros.wait_for(
+        lambda: max(clocks_so_far(), default=0) - min(clocks_so_far(), default=0) >= 3.0,
+        120,
+        "3 s of sim time",
+    )
+    call_service(ros, "/simulator/pause")
+    ros.wait_for(lambda: len(set(clocks_so_far()[-2:])) == 1, 60, "the paused clock")
+    records = probe.stop()
+    final_clock = clocks_so_far()[-1]
+    running = [
+        r for r in records if r["topic"] != "/clock" or secs(r["msg"]["clock"]) < final_clock
+    ]
+    scan_hz, scan_stamps = rate(running, "/scan")
+    odom_hz, _ = rate(running, "/odom")
+    clock_hz, clocks = rate(running, "/clock")
+    truth_hz, _ = rate(running, "/base_pose_ground_truth")
     assert abs(scan_hz - 10) < 0.1
     assert abs(odom_hz - 50) < 0.5 and abs(truth_hz - 50) < 0.5
     assert abs(clock_hz - 100) < 1
     assert min(clocks) >= 1.0 and clocks == sorted(clocks)
-    assert 3.0 < clocks[-1] - clocks[0] < 4.5  # speed 1.0 is real time
-    # Stamps are step times (multiples of 10 ms of sim time) never beyond the clock. (Comparing
-    # arrival order across the probe's separate connections would measure its threads.)
-    last_clock = max(clocks)
+    # Speed 1.0 is real time: the simulator never runs ahead of the wall clock (a loaded
+    # machine can only slow it; its real-time factor is measured in bench/bench_simulator).
+    received = max(r["wall"] for r in running if r["topic"] == "/clock")
+    assert clocks[-1] - clocks[0] <= (received - started) + 0.01  # + one physics step
+    # Stamps are step times (multiples of 10 ms of sim time), never beyond the clock.
     for r in records:
         if r["topic"] != "/clock":
             stamp = secs(r["msg"]["header"]["stamp"])
-            assert stamp <= last_clock + 0.011
+            assert stamp <= final_clock + 1e-9
             assert abs(stamp * 100 - round(stamp * 100)) < 1e-6
     assert min(scan_stamps) > 0
 
