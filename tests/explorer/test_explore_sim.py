@@ -15,10 +15,14 @@ sys.path.insert(0, str(HERE))
 from kinematic_sim import WORLDS  # noqa: E402
 from roskit import read_jsonl  # noqa: E402
 
-# Sim speed 8 runs at a real-time factor of about 7.5-8 on a loaded 2-core machine.
+# Sim speed 8; explore_sim.launch has the simulator wait for the explorer if it lags
+# (wait_for_commands), so coverage per sim second does not depend on the machine's load.
 SPEED = float(os.environ.get("EXPLORER_SIM_SPEED", "8"))
-# Measured with gmapping_lite (seed 1, speed 8): 82-87% at 400 s, 90-93% at 600 s.
-SIM_SECONDS = float(os.environ.get("EXPLORER_SIM_SECONDS", "600"))
+# Measured with gmapping_lite (seed 1, speed 8, machine loaded): 52% at 200 s, 70% at 300 s,
+# 80% at 400 s, 88% at 600 s. 300 s and 60% tell an exploring robot from a stuck one (what
+# the start room and the opening spin show is about 21%); the bench measures full coverage.
+SIM_SECONDS = float(os.environ.get("EXPLORER_SIM_SECONDS", "300"))
+COVERAGE_AT_END = 0.60
 PYTHON = "/usr/bin/python3"
 
 
@@ -115,15 +119,17 @@ def report(got, label):
     return last, elapsed
 
 
+@pytest.mark.slow
 def test_explorer_maps_the_office_with_slam(ros, tmp_path):
     if not slam_node_available():
         pytest.skip("gmapping_lite's slam_gmapping is not built in this workspace")
     got = run_exploration(ros, tmp_path, use_slam=True)
     last, elapsed = report(got, "office, gmapping_lite")
-    assert last["coverage"] >= 0.80
+    assert last["coverage"] >= COVERAGE_AT_END
     assert last["contact"] / elapsed < 0.05
 
 
+@pytest.mark.slow
 def test_explorer_maps_the_office_with_perfect_odometry(ros, tmp_path):
     """The same without SLAM (a stand-in mapper on perfect odometry), for workspaces that
     do not build gmapping_lite."""
@@ -131,5 +137,5 @@ def test_explorer_maps_the_office_with_perfect_odometry(ros, tmp_path):
         pytest.skip("gmapping_lite is built: the SLAM test covers this")
     got = run_exploration(ros, tmp_path, use_slam=False)
     last, elapsed = report(got, "office, perfect odometry")
-    assert last["coverage"] >= 0.80
+    assert last["coverage"] >= COVERAGE_AT_END
     assert last["contact"] / elapsed < 0.05
