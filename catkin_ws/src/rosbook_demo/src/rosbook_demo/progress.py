@@ -2,6 +2,11 @@
 
 import math
 
+# A run that holds less than this share of the speed asked is reported: below it, the pauses
+# the simulator makes for a lagging driver (~wait_for_commands) or the machine's load have
+# taken a fifth of the time, which is when SLAM's live results start to differ from offline.
+SPEED_HELD_SHARE = 0.8
+
 
 class ProgressMeter:
     def __init__(self, sim_seconds, wall_start, sim_start):
@@ -17,6 +22,21 @@ class ProgressMeter:
         if self._last_xy is not None:
             self.distance += math.hypot(x - self._last_xy[0], y - self._last_xy[1])
         self._last_xy = (x, y)
+
+    def speed_held(self, sim_now, wall_now):
+        """Simulated seconds per wall second since the start."""
+        return max(sim_now - self.sim_start, 0.0) / max(wall_now - self.wall_start, 1e-9)
+
+    def speed_warning(self, sim_now, wall_now, asked):
+        """A warning when the run held clearly less than the speed asked (None otherwise): the
+        machine was too busy, so the nodes saw the world slower than planned."""
+        held = self.speed_held(sim_now, wall_now)
+        if asked > 0 and held < SPEED_HELD_SHARE * asked:
+            return (
+                f"held only {held:.1f}x real time of the {asked:g}x asked: the machine was busy; "
+                "a lower --speed gives SLAM and the explorer the time they were meant to have"
+            )
+        return None
 
     def line(self, sim_now, wall_now, known_area_m2=None):
         elapsed_sim = max(sim_now - self.sim_start, 0.0)
