@@ -10,8 +10,10 @@ readings for open directions, a beam count that changes, or no odometry tf at al
 import argparse
 import math
 import time
+import warnings
 
 import numpy as np
+import rosgraph
 import rospy
 from geometry_msgs.msg import TransformStamped
 from rosgraph_msgs.msg import Clock
@@ -81,6 +83,27 @@ def trajectory(duration):
     return poses
 
 
+def wait_for_subscribers(publishers, timeout=60.0):
+    """Wait until each publisher is connected to every subscriber the master knows of (and
+    to as many as `publishers` says at least), so that nobody misses the start."""
+    me = rospy.get_name()
+    master = rosgraph.Master(me)
+    deadline = time.monotonic() + timeout
+    while True:
+        subscribers = dict(master.getSystemState()[1])
+        missing = []
+        for pub, least in publishers.items():
+            # (Under sim time this node subscribes to its own /clock: one of them.)
+            wanted = max(least, len(subscribers.get(pub.resolved_name, [])))
+            if pub.get_num_connections() < wanted:
+                missing.append(pub.resolved_name)
+        if not missing:
+            return
+        if time.monotonic() > deadline:
+            raise SystemExit(f"synthetic_scans: no subscribers on {missing} after {timeout} s")
+        time.sleep(0.02)
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("--duration", type=float, default=40.0, help="seconds of sim time")
@@ -98,10 +121,14 @@ def main():
     args = p.parse_args(rospy.myargv()[1:])
 
     rospy.init_node("synthetic_scans")
-    clock_pub = rospy.Publisher("/clock", Clock, queue_size=10)
-    scan_pub = rospy.Publisher("scan", LaserScan, queue_size=20)
-    tf_pub = rospy.Publisher("/tf", TFMessage, queue_size=50)
-    static_pub = rospy.Publisher("/tf_static", TFMessage, queue_size=1, latch=True)
+    with warnings.catch_warnings():
+        # No queues: publishing is synchronous, so every message is on the wire when
+        # publish() returns, and exiting right after the last one loses nothing.
+        warnings.simplefilter("ignore", SyntaxWarning)
+        clock_pub = rospy.Publisher("/clock", Clock)
+        scan_pub = rospy.Publisher("scan", LaserScan)
+        tf_pub = rospy.Publisher("/tf", TFMessage)
+        static_pub = rospy.Publisher("/tf_static", TFMessage, latch=True)
     walls = [w for w in ROOM if not (args.open_wall and w[0] == 4 and w[2] == 4)] + BOX
 
     start = rospy.Time.from_sec(args.start)
@@ -121,7 +148,7 @@ def main():
             ]
         )
     )
-    time.sleep(1.0)  # let subscribers connect before time starts moving
+    wait_for_subscribers({clock_pub: 0, scan_pub: 1, tf_pub: 0 if args.no_odom else 1})
 
     seq = 0
     for s, x, y, th in trajectory(args.duration):
@@ -162,8 +189,7 @@ def main():
             scan.ranges = ranges.astype(np.float32).tolist()
             scan_pub.publish(scan)
         seq += 1
-        time.sleep(0.02 / args.speed)
-    time.sleep(1.0)
+        time.sleep(0.02 / args.speed)  # pacing only
 
 
 if __name__ == "__main__":
