@@ -37,7 +37,11 @@ def test_goal_path_and_done_on_a_small_room(ros):
     assert abs(twist["linear"]["x"]) <= 0.35 and abs(twist["angular"]["z"]) <= 1.0
     done = ros.echo("explorer/done", count=1)[0]["msg"]
     assert done["data"] is False
-    assert "explorer" in ros.output(node)
+    # It says which frames it works in, and reports the goal it published.
+    gy = goal["pose"]["position"]["y"]
+    reported = f"goal ({gx:.2f}, {gy:.2f}): path "
+    ros.wait_for(lambda: reported in ros.output(node), 60, f"the log line '{reported}...'")
+    assert "explorer: exploring (map -> base_footprint)" in ros.output(node)
 
 
 def test_done_when_nothing_is_left_to_explore(ros):
