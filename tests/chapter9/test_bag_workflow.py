@@ -6,7 +6,7 @@ sim time, save it with map_saver, serve it with map_server, and check it against
 import math
 import re
 import signal
-import time
+import xmlrpc.client
 from pathlib import Path
 
 import numpy as np
@@ -21,6 +21,13 @@ START = (-8.5, 0.0, 0.0)  # the office world's start pose: where SLAM's map fram
 
 def clock(ros):
     return ros.echo("/clock", count=1)[0]["msg"]["clock"]
+
+
+def subscribes(ros, node, *topics):
+    """True once the master lists `node` as a subscriber of every topic."""
+    master = xmlrpc.client.ServerProxy(ros.env["ROS_MASTER_URI"])
+    _, _, (_, subscribers, _) = master.getSystemState("/chapter9_tests")
+    return all(node in dict(subscribers).get(topic, []) for topic in topics)
 
 
 def record_office_bag(ros, tmp_path):
@@ -48,9 +55,10 @@ def record_office_bag(ros, tmp_path):
         lambda: clock(ros) >= start + SIM_SECONDS,
         SIM_SECONDS / SPEED * 4 + 60,
         f"{SIM_SECONDS} s of simulated driving",
+        interval=1.0,  # each look at /clock starts a probe
     )
     ros.stop(recorder)
-    ros.wait_for(lambda: (tmp_path / "data.bag").exists(), 30, "data.bag to be closed")
+    ros.wait_for(lambda: (tmp_path / "data.bag").exists(), 60, "data.bag to be closed")
     # The book stops the simulator so that its scans do not mix with the bag's.
     ros.stop(wander)
     ros.stop(sim)
@@ -80,13 +88,10 @@ def test_record_map_save_serve_and_score(ros, tmp_path):
     ]:
         ros.run(["rosparam", "set", f"/slam_gmapping/{name}", str(value)])
     slam = ros.start(["rosrun", "gmapping", "slam_gmapping"], name="slam_gmapping")
-    ros.wait_for(
-        lambda: "/slam_gmapping" in ros.run(["rosnode", "list"]).stdout.split(),
-        30,
-        "slam_gmapping to start",
-    )
-    time.sleep(1.0)
-    play = ros.start(["rosbag", "play", "--clock", "-r", str(SPEED), str(bag)], name="play")
+    ros.wait_for(lambda: subscribes(ros, "/slam_gmapping", "/scan", "/tf"), 60, "slam_gmapping")
+    # The book's `rosbag play --clock`, once slam_gmapping is connected to /scan and /tf.
+    play_cmd = ["rosbag", "play", "--clock", "--wait-for-subscribers", "-r", str(SPEED)]
+    play = ros.start([*play_cmd, str(bag)], name="play")
     assert play.wait(timeout=SIM_SECONDS / SPEED * 6 + 60) == 0, ros.output(play)
     assert slam.poll() is None, ros.output(slam)
 
@@ -157,8 +162,10 @@ def test_book_bag_holds_the_whole_tf_chain(ros, tmp_path):
     recorder = ros.start(["rosbag", "record", "-O", str(bag), "/scan", "/tf"], name="record")
     ros.wait_for(lambda: Path(str(bag) + ".active").exists(), 30, "rosbag record to start")
     start = clock(ros)
-    ros.wait_for(lambda: clock(ros) >= start + 5.0, 30, "5 s of sim time")
+    ros.wait_for(lambda: clock(ros) >= start + 5.0, 120, "5 s of sim time", interval=1.0)
     ros.stop(recorder)
+    # rosbag's recording child closes (renames) the bag after the wrapper has exited.
+    ros.wait_for(bag.exists, 60, "the bag to be closed")
     ros.stop(sim)
     import rosbag
 
