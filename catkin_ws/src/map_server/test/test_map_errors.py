@@ -132,3 +132,10 @@ def test_deprecated_form_checks_resolution(tmp_path):
     write_pgm_p5(tmp_path / "m.pgm", [[0]])
     with pytest.raises(map_io.MapYamlError, match="resolution must be positive"):
         map_io.load_image_map(tmp_path / "m.pgm", -1.0)
+
+
+def test_deeply_nested_yaml_is_a_clear_error(tmp_path):
+    from map_server.map_yaml import parse_map_yaml
+
+    with pytest.raises(map_io.MapYamlError, match="nested too deeply"):
+        parse_map_yaml("image: " + "[" * 5000 + "]" * 5000, tmp_path / "m.yaml")

@@ -72,6 +72,8 @@ def parse_map_yaml(text, yaml_path):
         doc = yaml.safe_load(text)
     except yaml.YAMLError as err:
         raise MapYamlError(f"{where}: not valid YAML: {err}") from None
+    except RecursionError:  # PyYAML's parser recurses once per nesting level
+        raise MapYamlError(f"{where}: nested too deeply to be a map YAML") from None
     if not isinstance(doc, dict):
         raise MapYamlError(f"{where}: expected a mapping of keys (image, resolution, ...)")
     missing = [key for key in REQUIRED_KEYS if key not in doc]

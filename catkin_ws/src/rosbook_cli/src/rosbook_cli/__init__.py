@@ -1,0 +1,1 @@
+"""Boundary checks for the project's command-line tools (see checks.py)."""
