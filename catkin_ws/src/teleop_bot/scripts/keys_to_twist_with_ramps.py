@@ -10,6 +10,7 @@ import threading
 
 import rospy
 from geometry_msgs.msg import Twist
+from rosbook_env.sim_time import warn_if_no_clock
 from std_msgs.msg import String
 from teleop_bot.keys import velocities_for_key
 from teleop_bot.params import ParamError, finite_number, positive_number
@@ -64,6 +65,7 @@ class RampedKeysToTwist:
 
 def main():
     rospy.init_node("keys_to_twist")
+    warn_if_no_clock()  # says so if /use_sim_time waits for a /clock that never comes
     try:
         angular_scale = fetch_param("~angular_scale", 0.1, finite_number)
         linear_scale = fetch_param("~linear_scale", 0.1, finite_number)

@@ -3,11 +3,13 @@
 
 import rospy
 from geometry_msgs.msg import Twist
+from rosbook_env.sim_time import warn_if_no_clock
 from wanderbot.behaviours import TrafficLight
 
 
 def main():
     rospy.init_node("red_light_green_light")
+    warn_if_no_clock()  # says so if /use_sim_time waits for a /clock that never comes
     cmd_vel_pub = rospy.Publisher("cmd_vel", Twist, queue_size=1)
 
     red_light_twist = Twist()

@@ -11,6 +11,7 @@ import threading
 
 import rospy
 from geometry_msgs.msg import Twist
+from rosbook_env.sim_time import warn_if_no_clock
 from sensor_msgs.msg import LaserScan
 from wanderbot.behaviours import Wanderer
 from wanderbot.params import ParamError, finite_number, positive_number
@@ -57,6 +58,7 @@ class WanderNode:
 
 def main():
     rospy.init_node("wander")
+    warn_if_no_clock()  # says so if /use_sim_time waits for a /clock that never comes
     try:
         node = WanderNode()
     except ParamError as error:

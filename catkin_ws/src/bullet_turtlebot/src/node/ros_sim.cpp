@@ -2,6 +2,8 @@
 
 #include <bullet_turtlebot/BumperEvent.h>
 #include <nav_msgs/Odometry.h>
+#include <ros/master.h>
+#include <ros/this_node.h>
 #include <rosgraph_msgs/Clock.h>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
@@ -13,11 +15,14 @@
 #include <tf2_msgs/TFMessage.h>
 
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 
 namespace bullet_turtlebot {
 namespace {
+
+volatile std::sig_atomic_t g_stop_requested = 0;
 
 geometry_msgs::Quaternion yaw_quaternion(double yaw) {
   geometry_msgs::Quaternion q;
@@ -153,6 +158,32 @@ void RosSimulator::load_parameters() {
   camera_.depth_min = laser_.range_min;
   huge_linear_ = param(pnh_, "huge_linear", huge_linear_);
   huge_angular_ = param(pnh_, "huge_angular", huge_angular_);
+  use_sim_time_before_ = param(pnh_, "use_sim_time_before_launch", std::string());
+}
+
+void RosSimulator::request_stop() { g_stop_requested = 1; }
+
+// simulator.launch sets /use_sim_time true for every node it starts, and roslaunch leaves it
+// on the master when the launch ends: on a long-lived roscore, later nodes would then wait
+// for a /clock nobody publishes. The launch file records the value from before it (see
+// there); put that back, unless someone changed the parameter since.
+void RosSimulator::restore_use_sim_time() const {
+  if (use_sim_time_before_.empty() || use_sim_time_before_ == "true" || use_sim_time_before_ == "other") return;
+  XmlRpc::XmlRpcValue request, response, value;
+  request[0] = ros::this_node::getName();
+  request[1] = std::string("/use_sim_time");
+  // wait_for_master false throughout: if the master has gone, there is nothing to restore.
+  if (!ros::master::execute("getParam", request, response, value, false)) return;
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeBoolean || !static_cast<bool>(value)) return;
+  XmlRpc::XmlRpcValue ignored;
+  if (use_sim_time_before_ == "unset") {
+    if (ros::master::execute("deleteParam", request, response, ignored, false))
+      ROS_INFO("simulator: removed /use_sim_time (it was not set before the launch)");
+  } else {
+    request[2] = false;
+    if (ros::master::execute("setParam", request, response, ignored, false))
+      ROS_INFO("simulator: /use_sim_time back to false (as before the launch)");
+  }
 }
 
 bool RosSimulator::due(double rate) const {
@@ -400,7 +431,7 @@ int RosSimulator::run() {
   const ros::WallTime run_start = anchor_wall;
   const double sim_start = sim_.now();
   ros::WallTime last_paused_clock;
-  while (ros::ok()) {
+  while (ros::ok() && !g_stop_requested) {
     ros::spinOnce();
     if (paused_) {
       // Keep repeating the (frozen) time so nodes started meanwhile learn it.
@@ -432,8 +463,10 @@ int RosSimulator::run() {
       }
     }
   }
+  // A clean exit (SIGINT, as roslaunch sends it) leaves the node connected: tidy up the master.
+  if (ros::ok()) restore_use_sim_time();
   const double wall = (ros::WallTime::now() - run_start).toSec();
-  // Plain stdout: rosout is gone by now. Benchmarks parse this line.
+  // Plain stdout: rosout may be gone by now. Benchmarks parse this line.
   std::printf("simulator: simulated %.2f s in %.2f wall s (real-time factor %.1f), %llu collision steps\n",
               sim_.now() - sim_start, wall, wall > 0 ? (sim_.now() - sim_start) / wall : 0.0,
               static_cast<unsigned long long>(sim_.collisions()));

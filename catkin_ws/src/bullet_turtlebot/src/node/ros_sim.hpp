@@ -26,8 +26,10 @@ class RosSimulator {
  public:
   RosSimulator(ros::NodeHandle nh, ros::NodeHandle pnh, std::shared_ptr<const World> world,
                const SimulationConfig& config, const Pose2D& start, const std::string& world_source);
-  // Runs until shutdown; returns the process exit code.
+  // Runs until shutdown or request_stop(); returns the process exit code.
   int run();
+  // Ends run() at its next step; async-signal-safe (the node's SIGINT handler calls it).
+  static void request_stop();
 
  private:
   void load_parameters();
@@ -40,6 +42,7 @@ class RosSimulator {
   void on_velocity(const std::string& topic, int mux_input, const geometry_msgs::Twist& msg);
   void on_plain_cmd_vel();
   void on_set_pose(const geometry_msgs::Pose2D& msg);
+  void restore_use_sim_time() const;  // on a clean exit: /use_sim_time as before the launch
   ros::Time stamp() const { return ros::Time(sim_.now()); }
   bool due(double rate) const;
   bool waiting_for_driver() const;  // ~wait_for_commands: hold the clock for a lagging driver
@@ -48,6 +51,9 @@ class RosSimulator {
   ros::NodeHandle nh_, pnh_;
   Simulation sim_;
   std::string world_source_;
+  // ~use_sim_time_before_launch, set by simulator.launch: "unset", "true", "false" or
+  // "other"; empty when the node was started without it (then it never touches the param).
+  std::string use_sim_time_before_;
   CommandMux mux_;
   NodeRates rates_;
   LaserConfig laser_;

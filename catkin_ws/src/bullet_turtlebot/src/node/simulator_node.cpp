@@ -1,6 +1,7 @@
 // simulator: the Turtlebot simulator node (stands in for Gazebo and Stage).
 #include <ros/ros.h>
 
+#include <csignal>
 #include <cstdio>
 #include <memory>
 
@@ -9,7 +10,10 @@
 #include "ros_sim.hpp"
 
 int main(int argc, char** argv) {
-  ros::init(argc, argv, "simulator");
+  // Our own SIGINT handler: roscpp's would shut the node down at once, and the simulator
+  // still has to talk to the master on its way out (RosSimulator::restore_use_sim_time).
+  ros::init(argc, argv, "simulator", ros::init_options::NoSigintHandler);
+  std::signal(SIGINT, [](int) { bullet_turtlebot::RosSimulator::request_stop(); });
   ros::NodeHandle nh;
   ros::NodeHandle pnh("~");
   namespace bt = bullet_turtlebot;
@@ -70,7 +74,9 @@ int main(int argc, char** argv) {
       start.y = free.y();
     }
     bt::RosSimulator simulator(nh, pnh, world, config, start, world_path);
-    return simulator.run();
+    const int status = simulator.run();
+    ros::shutdown();
+    return status;
   } catch (const std::invalid_argument& e) {
     ROS_FATAL("world file '%s': %s", world_path.c_str(), e.what());
     std::fprintf(stderr, "simulator: world file '%s': %s\n", world_path.c_str(), e.what());
