@@ -13,11 +13,13 @@ import subprocess
 import sys
 import tempfile
 import time
+import xmlrpc.client
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parent.parent
 PROBE = Path(__file__).resolve().parent / "tools" / "topic_probe.py"
 DEBIAN_PYTHON = "/usr/bin/python3"
+CALLER_ID = "/roskit"
 
 
 def free_port():
@@ -114,16 +116,31 @@ class RosGraph:
             self.stop(proc, timeout=5)
 
     # -- waiting -----------------------------------------------------------------
-    def wait_for_master(self, timeout=30):
+    def master(self):
+        """The master's XML-RPC API, asked in-process: polling it costs no process start-up,
+        which matters when a loaded machine makes every `rostopic` call take a second."""
+        return xmlrpc.client.ServerProxy(self.env["ROS_MASTER_URI"], transport=_QuickTransport())
+
+    def wait_for_master(self, timeout=60):
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
             if self.core.poll() is not None:
                 raise RuntimeError("roscore died:\n" + self.output(self.core))
-            done = subprocess.run(["rosparam", "get", "/run_id"], env=self.env, capture_output=True)
-            if done.returncode == 0:
-                return
-            time.sleep(0.2)
+            try:
+                code, _, _ = self.master().getParam(CALLER_ID, "/run_id")
+                if code == 1:  # roscore sets /run_id once it is up
+                    return
+            except (OSError, xmlrpc.client.Error):
+                pass
+            time.sleep(0.1)
         raise TimeoutError("roscore did not answer within %s s" % timeout)
+
+    def system_state(self):
+        """[publishers, subscribers, services], each [[name, [node, ...]], ...]."""
+        code, message, state = self.master().getSystemState(CALLER_ID)
+        if code != 1:
+            raise RuntimeError(f"getSystemState: {message}")
+        return state
 
     def wait_for(self, predicate, timeout=20, what="condition", interval=0.1):
         deadline = time.monotonic() + timeout
@@ -134,20 +151,20 @@ class RosGraph:
         raise AssertionError(f"timed out after {timeout} s waiting for {what}")
 
     def topics(self):
-        done = self.run(["rostopic", "list"], check=False)
-        return set(done.stdout.split())
+        """Every topic with a publisher or a subscriber (what `rostopic list` prints)."""
+        publishers, subscribers, _ = self.system_state()
+        return {name for name, _ in publishers + subscribers}
 
-    def wait_for_topic(self, topic, timeout=20):
+    def services(self):
+        return {name for name, _ in self.system_state()[2]}
+
+    def wait_for_topic(self, topic, timeout=60):
         topic = "/" + topic.lstrip("/")
         self.wait_for(lambda: topic in self.topics(), timeout, f"topic {topic}")
 
-    def wait_for_service(self, service, timeout=20):
+    def wait_for_service(self, service, timeout=60):
         service = "/" + service.lstrip("/")
-
-        def advertised():
-            return service in self.run(["rosservice", "list"], check=False).stdout.split()
-
-        self.wait_for(advertised, timeout, f"service {service}")
+        self.wait_for(lambda: service in self.services(), timeout, f"service {service}")
 
     # -- topics --------------------------------------------------------------------
     def probe(self, topics, count=None, duration=None, timeout=30, name=None, ready=True):
@@ -238,6 +255,15 @@ def run_rostest(package, test_file, timeout=300, extra_args=()):
     if done.returncode != 0:
         raise AssertionError(f"rostest {package} {test_file} exited {done.returncode}\n{output}")
     return output
+
+
+class _QuickTransport(xmlrpc.client.Transport):
+    """XML-RPC with a socket timeout, so a master that stopped answering cannot hang a test."""
+
+    def make_connection(self, host):
+        connection = super().make_connection(host)
+        connection.timeout = 10
+        return connection
 
 
 def _safe(label):
