@@ -46,3 +46,15 @@ def test_tab_completion_of_package_and_script_names():
         '_roscomplete_exe && printf "%s\\n" "${COMPREPLY[@]}"'
     )
     assert set(rosrun.split()) == {"topic_publisher.py"}
+
+
+def test_rviz_media_lookup_finds_the_media_export_package():
+    # rviz runs this at start-up; without a media_export package rospack prints
+    # "[rospack] Error: no such package media_export" (catkin_ws/src/media_export).
+    done = subprocess.run(
+        ["rospack", "plugins", "--attrib=ogre_media_path", "media_export"],
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert done.returncode == 0 and "Error" not in done.stderr, done.stderr
