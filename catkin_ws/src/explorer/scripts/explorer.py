@@ -76,7 +76,11 @@ class ExplorerNode:
         self.scan_half_width = planner_params.robot_radius + 0.04
         self.planner = MapPlanner(planner_params)
         self.explorer = Explorer(
-            explorer_params, follower_params, recovery_params, planner_params.blacklist_radius
+            explorer_params,
+            follower_params,
+            recovery_params,
+            planner_params.blacklist_radius,
+            min_progress=planner_params.min_gain,
         )
         self.lock = threading.Lock()
         self.wake = threading.Event()
@@ -239,21 +243,22 @@ class ExplorerNode:
                 if self.pose is None or not self.explorer.wants_plan(now, stamp):
                     continue
                 raw = self.raw_map
-                excluded = self.explorer.excluded_points(now)
-                goal = self.explorer.current_goal
-                views = self.explorer.pending_views(stamp)
-                dead = self.explorer.excluded_frontiers(now)
+                inputs = self.explorer.plan_inputs(now, stamp)
                 x, y, _ = self.pose
             started = time.monotonic()
             if stamp != self.prepared_stamp:
                 self.planner.set_map(raw.data, raw.resolution, raw.origin[0], raw.origin[1])
                 self.prepared_stamp = stamp
-            plan = self.planner.plan(
-                x, y, excluded, current_goal=goal, views=views, dead_frontiers=dead
-            )
+            plan = self.planner.plan(x, y, **inputs)
             rospy.logdebug(f"explorer: planned in {time.monotonic() - started:.3f} s wall")
             with self.lock:
-                self.explorer.accept_plan(plan, rospy.get_time(), stamp)
+                self.explorer.accept_plan(
+                    plan,
+                    rospy.get_time(),
+                    stamp,
+                    known_area=self.planner.known_free_area(),
+                    start_blocked=self.planner.start_blocked,
+                )
             if plan is not None:
                 self.publish_plan(plan)
 

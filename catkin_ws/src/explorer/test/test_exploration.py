@@ -92,15 +92,122 @@ def test_stuck_robot_recovers():
     assert any("stuck" in e for e in explorer.events)
 
 
-def test_a_frontier_looked_at_twice_is_ignored():
+def look_at(explorer, t, close=False, goal=(2.0, 0.0)):
+    """Plan for the frontier beyond `goal`, arrive at once, finish looking; the time after."""
+    p = plan(goal=goal)
+    p.close = close
+    explorer.accept_plan(p, t, map_stamp=t)
+    explorer.control(t, *goal, 0.0)  # arrive at once
+    yaw = 0.0
+    while explorer.state == LOOK:
+        _, w = explorer.control(t, *goal, yaw)
+        yaw += w * 0.1
+        t += 0.1
+    return t + 1
+
+
+def no_plan(explorer, t, known_area=None):
+    """What the node does when the planner finds nothing on a map made at `t`."""
+    explorer.plan_inputs(t, t)  # drops the views the map shows
+    explorer.accept_plan(None, t, map_stamp=t, known_area=known_area)
+
+
+def test_a_frontier_looked_at_twice_is_approached_closely_then_set_aside():
     explorer = Explorer()
     t = spun(explorer)
     for _ in range(2):
-        explorer.accept_plan(plan(), t, map_stamp=t)
-        explorer.control(t, 2.0, 0.0, 0.0)  # arrive at once
-        t += 1
+        t = look_at(explorer, t)
+    assert explorer.plan_inputs(t, t)["close_targets"] == [(3.0, 0.0)]
+    assert explorer.excluded_frontiers(t) == []
+    assert any("approaching it closely" in e for e in explorer.events)
+    for _ in range(2):
+        t = look_at(explorer, t, close=True)
     assert explorer.excluded_frontiers(t) == [(3.0, 0.0)]
+    assert explorer.plan_inputs(t, t)["dead_frontiers"] == [(3.0, 0.0)]
     assert not explorer.done
+    # Set aside until nothing else is left: not after the blacklist timeout.
+    assert explorer.excluded_frontiers(t + 10 * explorer.params.blacklist_timeout)
+
+
+def test_nothing_left_but_set_aside_frontiers_retries_them_instead_of_stopping():
+    explorer = Explorer()
+    t = spun(explorer)
+    for close in (False, False, True, True):
+        t = look_at(explorer, t, close=close)
+    explorer.accept_plan(plan(goal=(5.0, 0.0)), t, map_stamp=t)
+    explorer.bumped(t + 1)  # a blacklisted goal as well
+    assert explorer.excluded_points(t + 1) == [(5.0, 0.0)]
+    explorer.control(t + 10, 0.0, 0.0, 0.0)  # recovery over
+    no_plan(explorer, t + 11, 50.0)
+    assert not explorer.done and explorer.state == WAIT and explorer.plan_requested
+    assert any("retrying them (round 1)" in e for e in explorer.events)
+    inputs = explorer.plan_inputs(t + 11, t + 11)
+    assert inputs["excluded_points"] == [] and inputs["dead_frontiers"] == []
+    assert inputs["close_targets"] == [(3.0, 0.0)]  # retried from close by
+    # Nothing left at all now: done, after done_after plans.
+    no_plan(explorer, t + 12, 50.0)
+    assert not explorer.done
+    no_plan(explorer, t + 13, 50.0)
+    assert explorer.done
+    assert any("no reachable frontier left" in e for e in explorer.events)
+
+
+def test_retries_go_on_while_they_reveal_something_and_stop_when_they_do_not():
+    explorer = Explorer(min_progress=1.0)
+    t = spun(explorer)
+
+    def set_aside_and_find_nothing(t, area):
+        for close in (True, True):
+            t = look_at(explorer, t, close=close)
+        no_plan(explorer, t, area)
+        return t + 1
+
+    t = set_aside_and_find_nothing(t, 50.0)
+    assert explorer.retry_rounds == 1 and not explorer.done
+    t = set_aside_and_find_nothing(t, 54.0)  # the round revealed 4 m^2: once more
+    assert explorer.retry_rounds == 2 and not explorer.done
+    t = set_aside_and_find_nothing(t, 54.5)  # only 0.5 m^2: not worth another round
+    assert explorer.retry_rounds == 2 and explorer.state == WAIT
+    no_plan(explorer, t, 54.5)
+    assert explorer.done
+    assert any("revealed nothing" in e for e in explorer.events)
+    # A new frontier still wakes it up.
+    explorer.accept_plan(plan(), t + 5, map_stamp=t + 5, known_area=54.5)
+    assert explorer.state == FOLLOW
+
+
+def test_without_the_known_area_one_round_of_retries():
+    explorer = Explorer()
+    t = spun(explorer)
+    for _ in range(2):
+        for close in (True, True):
+            t = look_at(explorer, t, close=close)
+        no_plan(explorer, t)
+        t += 1
+    assert explorer.retry_rounds == 1
+    no_plan(explorer, t)
+    assert explorer.done
+
+
+def test_blacklisted_goals_expire_with_time():
+    explorer = Explorer()
+    t = spun(explorer)
+    explorer.accept_plan(plan(), t, map_stamp=t)
+    explorer.bumped(t)
+    timeout = explorer.params.blacklist_timeout
+    assert explorer.plan_inputs(t + timeout - 1, t)["excluded_points"] == [(2.0, 0.0)]
+    assert explorer.plan_inputs(t + timeout + 1, t)["excluded_points"] == []
+
+
+def test_no_traversable_cell_near_the_robot_is_not_the_end():
+    explorer = Explorer()
+    t = spun(explorer)
+    explorer.accept_plan(plan(), t, map_stamp=t)
+    for k in range(5):
+        explorer.accept_plan(None, t + k, map_stamp=t + k, known_area=10.0, start_blocked=True)
+        assert explorer.state == RECOVER and not explorer.done
+    assert explorer.excluded_points(t + 5) == []  # the goal was not to blame
+    assert any("no traversable cell" in e for e in explorer.events)
 
 
 def test_initial_spin_can_be_skipped():

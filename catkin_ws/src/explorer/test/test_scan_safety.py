@@ -43,3 +43,15 @@ def test_out_of_range_finite_readings_are_ignored():
 
 def test_empty_scan():
     assert clearance_ahead([], 0.0, 0.01, 0.45, 8.0, 0.22) == math.inf
+
+
+def test_a_wide_scanner_ignores_what_is_behind():
+    """A 360-degree scan: a -inf or finite return straight behind does not block."""
+    count = 720
+    ranges = np.full(count, math.inf)
+    ranges[0] = -math.inf  # angle -pi: straight behind
+    ranges[1] = 0.6
+    increment = 2 * math.pi / count
+    assert clearance_ahead(ranges, -math.pi, increment, 0.45, 30.0, 0.22) == math.inf
+    ranges[count // 2] = -math.inf  # straight ahead
+    assert clearance_ahead(ranges, -math.pi, increment, 0.45, 30.0, 0.22) == 0.0

@@ -3,8 +3,15 @@ it, repeat; recover when stuck; stop when no reachable frontier is left.
 
 The owner calls `control()` at a fixed rate with the robot pose and the free distance
 ahead, calls `wants_plan()` with the stamp of its latest map to learn when to run the
-planner, and hands the result (a map_planner.Plan or None) to `accept_plan()`. Every time
-is in seconds of ROS time.
+planner (with the arguments `plan_inputs()` gives), and hands the result (a
+map_planner.Plan or None) to `accept_plan()`. Every time is in seconds of ROS time.
+
+It never gives up early. A frontier looked at in vain from afar (`max_visits` times) is
+approached closely next; one looked at in vain closely too is set aside, and so is a goal
+the robot failed to reach (for `blacklist_timeout`). When nothing but set-aside frontiers
+and goals is left, all of them are retried; `done` comes only when no frontier can be
+planned for, or when a round of retries revealed nothing (less known free area gained than
+`min_progress`), so the retries cannot go on forever.
 
 SLAM publishes its map every few seconds, so right after looking at a frontier the map
 does not show what was just seen. Rather than wait, the explorer remembers where it
@@ -31,17 +38,28 @@ class ExplorerParams:
     goal_timeout_factor: float = 3.0  # give up a goal after this x its expected time
     goal_timeout_min: float = 20.0  # s
     done_after: int = 2  # consecutive plans without a frontier before declaring done
-    max_visits: int = 2  # looking at the same frontier this often (in blacklist_timeout) drops it
+    max_visits: int = 2  # looks at the same frontier (in blacklist_timeout) before escalating
 
 
 class Explorer:
-    def __init__(self, params=None, follower=None, recovery=None, blacklist_radius=0.8):
+    def __init__(
+        self, params=None, follower=None, recovery=None, blacklist_radius=0.8, min_progress=1.0
+    ):
+        """`min_progress` (m^2): a round of retries that made less known free area than
+        this revealed nothing; the owner passes the planner's min_gain (a frontier opening
+        onto less unknown space is not worth a visit either)."""
         self.params = params or ExplorerParams()
         self.follower_params = follower or FollowerParams()
         self.recovery_params = recovery or RecoveryParams()
+        self.min_progress = min_progress
         self.blacklist = Blacklist(blacklist_radius, self.params.blacklist_timeout)
-        # Frontiers looked at again and again in vain (too low, occluded): ignored a while.
-        self.dead_frontiers = Blacklist(blacklist_radius, self.params.blacklist_timeout)
+        # Frontiers looked at from afar again and again in vain (a grazing view along a
+        # shadow, an occluded corner): approached closely from then on.
+        self.close_targets = Blacklist(blacklist_radius, math.inf)
+        # Frontiers looked at in vain closely too: set aside until nothing else is left.
+        self.dead_frontiers = Blacklist(blacklist_radius, math.inf)
+        self.retry_area = None  # known free area (m^2) when the last retry round began
+        self.retry_rounds = 0
         self.stuck = StuckMonitor()
         self.state = SPIN
         self.spun = 0.0
@@ -58,7 +76,7 @@ class Explorer:
         self.goals_reached = 0
         self.planned_stamp = -math.inf  # stamp of the map the last plan used
         self.views = []  # (x, y, yaw, time) where the robot looked at a frontier
-        self.reached = []  # (x, y, time) of reached goals, to catch repeats
+        self.reached = []  # (x, y, time, close) of looked-at targets, to catch repeats
         self.look_queue = []  # headings still to turn through at the goal
         if self.params.initial_spin <= 0:
             self._request_plan(WAIT)
@@ -91,15 +109,34 @@ class Explorer:
     def excluded_frontiers(self, now):
         return self.dead_frontiers.active(now)
 
+    def plan_inputs(self, now, map_stamp):
+        """Keyword arguments for map_planner.MapPlanner.plan (besides the robot's x, y)."""
+        return {
+            "excluded_points": self.excluded_points(now),
+            "current_goal": self.current_goal,
+            "views": self.pending_views(map_stamp),
+            "dead_frontiers": self.excluded_frontiers(now),
+            "close_targets": self.close_targets.active(now),
+        }
+
     def pending_views(self, map_stamp):
         """Views (x, y, yaw) taken after the map was made: the map does not show them."""
         self.views = [v for v in self.views if v[3] > map_stamp]
         return [v[:3] for v in self.views]
 
-    def accept_plan(self, plan, now, map_stamp):
+    def accept_plan(self, plan, now, map_stamp, known_area=None, start_blocked=False):
+        """`known_area`: m^2 of known free space on the planned map (None: not known, and
+        then one round of retries at most); `start_blocked`: the planner found no
+        traversable cell near the robot, so None says nothing about frontiers."""
         self.last_plan_time = now
         self.planned_stamp = map_stamp
         self.plan_requested = False
+        if plan is None and start_blocked and self.state != DONE:
+            # Not the goal's fault: recover without blacklisting it.
+            self.follower = None
+            self.state = WAIT
+            self._recover(now, "no traversable cell near the robot")
+            return
         if plan is None:
             if self.views:
                 # The map is older than our last looks, and what we looked at hides every
@@ -108,7 +145,7 @@ class Explorer:
                 self.views = []
                 self._start_spin()
                 return
-            self._no_frontier(now)
+            self._no_frontier(now, known_area)
             return
         self.empty_plans = 0
         if self.state == DONE:
@@ -117,7 +154,7 @@ class Explorer:
             self.events.append(
                 f"goal ({plan.goal[0]:.2f}, {plan.goal[1]:.2f}): path {plan.cost:.1f} m, "
                 f"frontier {plan.frontier_size:.1f} m opening onto {plan.gain:.1f} m^2, "
-                f"{plan.frontiers_left} frontiers left"
+                f"{plan.frontiers_left} frontiers left{', close approach' if plan.close else ''}"
             )
             self.goal_started = now
             self.stuck.reset()
@@ -125,23 +162,50 @@ class Explorer:
         self.follower = PurePursuit(plan.path, self.follower_params)
         self.state = FOLLOW
 
-    def _no_frontier(self, now):
+    def _no_frontier(self, now, known_area=None):
         if self.state == FOLLOW:
             # Our frontier was explored on the way and nothing else is reachable: stop
             # and ask again; the map may still be catching up.
             self.follower = None
-        self.empty_plans += 1
-        if self.blacklist.active(now):
-            self.events.append("no frontier left but blacklisted goals: retrying them")
+        goals = len(self.blacklist.active(now))
+        frontiers = len(self.dead_frontiers.active(now))
+        if (goals or frontiers) and self._retry_worthwhile(known_area):
+            self.retry_rounds += 1
+            self.events.append(
+                f"no frontier left but {goals} blacklisted goals and {frontiers} frontiers "
+                f"set aside: retrying them (round {self.retry_rounds})"
+            )
             self.blacklist.clear()
-            self.state = WAIT
+            for x, y in self.dead_frontiers.active(now):
+                self._approach_closely(x, y, now)
+            self.dead_frontiers.clear()
+            self.reached = []
+            self.retry_area = known_area
+            self.empty_plans = 0
+            self._request_plan(WAIT)
             return
+        self.empty_plans += 1
         if self.empty_plans >= self.params.done_after:
             if self.state != DONE:
-                self.events.append("exploration done: no reachable frontier left")
+                why = "no reachable frontier left"
+                if goals or frontiers:
+                    why = (
+                        f"{goals} goals and {frontiers} frontiers still set aside, but the "
+                        "last round of retries revealed nothing"
+                    )
+                self.events.append(f"exploration done: {why}")
             self.state = DONE
         else:
             self.state = WAIT
+
+    def _retry_worthwhile(self, known_area):
+        """A first round of retries always; another only if the last one revealed at
+        least min_progress m^2 (without the area, never)."""
+        if self.retry_rounds == 0:
+            return True
+        if known_area is None or self.retry_area is None:
+            return False
+        return known_area - self.retry_area >= self.min_progress
 
     # -- control -----------------------------------------------------------------
     def control(self, now, x, y, yaw, clearance=math.inf):
@@ -187,20 +251,39 @@ class Explorer:
     def _arrived(self, now):
         gx, gy = self.plan.goal
         tx, ty = self.plan.target
+        close = self.plan.close
         self.goals_reached += 1
         self.events.append(f"reached goal ({gx:.2f}, {gy:.2f})")
         timeout = self.params.blacklist_timeout
         self.reached = [r for r in self.reached if now - r[2] < timeout]
         radius = self.dead_frontiers.radius
-        visits = sum(math.hypot(rx - tx, ry - ty) < radius for rx, ry, _ in self.reached)
+        visits = sum(
+            math.hypot(rx - tx, ry - ty) < radius and was_close == close
+            for rx, ry, _, was_close in self.reached
+        )
         if visits >= self.params.max_visits - 1:
-            # Looked at this part of a frontier before, and it is still there: it cannot
-            # be mapped from where we can go (too low, occluded, too far).
-            self.events.append(
-                f"frontier at ({tx:.2f}, {ty:.2f}) looked at {visits + 1} times: ignored"
-            )
-            self.dead_frontiers.add(tx, ty, now)
-        self.reached.append((tx, ty, now))
+            # Looked at this part of a frontier before, and it is still there.
+            if close:
+                # Even from close by: it cannot be mapped from where we can go (too low,
+                # occluded, too far). Set aside until nothing else is left.
+                self.events.append(
+                    f"frontier at ({tx:.2f}, {ty:.2f}) looked at {visits + 1} times closely: "
+                    "set aside"
+                )
+                self.dead_frontiers.add(tx, ty, now)
+            else:
+                # From afar the view may graze along a shadow's edge: go up to it.
+                self.events.append(
+                    f"frontier at ({tx:.2f}, {ty:.2f}) looked at {visits + 1} times: "
+                    "approaching it closely"
+                )
+                self._approach_closely(tx, ty, now)
+        self.reached.append((tx, ty, now, close))
+
+    def _approach_closely(self, x, y, now):
+        radius = self.close_targets.radius
+        if all(math.hypot(x - cx, y - cy) >= radius for cx, cy in self.close_targets.active(now)):
+            self.close_targets.add(x, y, now)
 
     def _request_plan(self, state):
         self.state = state

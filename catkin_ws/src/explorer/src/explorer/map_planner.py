@@ -8,7 +8,7 @@ import numpy as np
 
 from .costmap import inflate
 from .frontiers import find_frontiers, information_gain
-from .grid import FREE, GridGeometry, classify, downsample, known_window
+from .grid import FREE, UNKNOWN, GridGeometry, classify, downsample, known_window
 from .planner import approach_labels, choose_goal, distance_field, extract_path
 from .visibility import line_of_sight, sweep_headings
 
@@ -21,6 +21,21 @@ def _drop_cells(labels, frontiers, rows, cols, drop):
     labels[rows[drop], cols[drop]] = 0
     left = set(np.unique(labels[labels > 0]).tolist())
     return labels, [f for f in frontiers if f.label in left]
+
+
+def unknown_neighbours(classes, cells):
+    """(K, 2) row, col of the UNKNOWN cells among the 8 neighbours of `cells` (N, 2)."""
+    cells = np.asarray(cells, dtype=int).reshape(-1, 2)
+    h, w = classes.shape
+    found = set()
+    for dr in (-1, 0, 1):
+        for dc in (-1, 0, 1):
+            rows, cols = cells[:, 0] + dr, cells[:, 1] + dc
+            ok = (rows >= 0) & (rows < h) & (cols >= 0) & (cols < w)
+            rows, cols = rows[ok], cols[ok]
+            hit = classes[rows, cols] == UNKNOWN
+            found.update(zip(rows[hit].tolist(), cols[hit].tolist(), strict=True))
+    return np.array(sorted(found), dtype=int).reshape(-1, 2)
 
 
 @dataclass
@@ -57,6 +72,7 @@ class Plan:
     frontiers_left: int
     kept: bool = False  # the previous goal was kept
     target: tuple = (0.0, 0.0)  # (x, y): middle of the frontier cells seen from the goal
+    close: bool = False  # a close approach: the goal stands at the frontier (see plan())
 
 
 @dataclass
@@ -73,6 +89,9 @@ class MapPlanner:
     def __init__(self, params=None):
         self.params = params or PlannerParams()
         self.prepared = None
+        # The last plan() found no traversable cell near the robot (it brushed a wall or
+        # the map moved under it): no plan, but not for want of frontiers.
+        self.start_blocked = False
 
     def set_map(self, data, resolution, origin_x, origin_y):
         """data: (height, width) OccupancyGrid values. Returns False if nothing is known."""
@@ -124,13 +143,29 @@ class MapPlanner:
             mask |= (xs - x) ** 2 + (ys - y) ** 2 <= r2
         return mask
 
-    def plan(self, x, y, excluded_points=(), current_goal=None, views=(), dead_frontiers=()):
+    def plan(
+        self,
+        x,
+        y,
+        excluded_points=(),
+        current_goal=None,
+        views=(),
+        dead_frontiers=(),
+        close_targets=(),
+    ):
         """Plan from (x, y) to the best frontier; None if no frontier is reachable.
 
         `excluded_points`: blacklisted goals (x, y). `current_goal` (x, y): keep it while
         it still observes a frontier and scores within switch_margin of the best.
         `views` (x, y, yaw): where the robot looked since the map was made; frontier
-        cells in view from there count as observed."""
+        cells in view from there count as observed. `dead_frontiers` (x, y): frontier
+        cells within blacklist_radius are ignored. `close_targets` (x, y): a frontier with
+        cells within blacklist_radius of one was looked at from afar in vain (a grazing
+        view along a shadow's edge, an occluded corner): it is approached closely instead,
+        from a goal on the frontier, and the look turns towards the unknown cells behind
+        it rather than towards the frontier cells. `start_blocked` tells afterwards
+        whether None meant no traversable cell near the robot."""
+        self.start_blocked = False
         prep = self.prepared
         if prep is None or not prep.frontiers:
             return None
@@ -140,35 +175,60 @@ class MapPlanner:
         labels, frontiers = self._without(labels, frontiers, dead_frontiers)
         if not frontiers:
             return None
+        far_labels, far, close_labels, close = self._split(labels, frontiers, close_targets)
         start = tuple(int(v) for v in g.to_cell(x, y))
         snap = int(math.ceil(0.5 / g.resolution))
         dist = distance_field(prep.costmap, start, g.resolution, snap_cells=snap)
         if dist is None:
+            self.start_blocked = True
             return None
         excluded = self._excluded(list(excluded_points))
+        # A close approach stands on the frontier: as near its cells as the robot's centre
+        # may come to a wall (its radius plus the safety margin) and one cell more, so that
+        # a frontier along a wall can be approached too.
+        close_reach = p.robot_radius + p.safety_margin + g.resolution
+        close_near = None
+        if close:
+            close_near = approach_labels(close_labels, prep.classes, g.resolution, close_reach)
 
-        def choose(mask):
+        def choose_kind(mask, kind_labels, kind_frontiers, reach, near):
             return choose_goal(
                 dist,
                 prep.classes,
-                labels,
-                frontiers,
+                kind_labels,
+                kind_frontiers,
                 g.resolution,
-                reach=(p.reach_min, p.reach_max),
+                reach=reach,
                 info_weight=p.info_weight,
                 info_cap=p.info_cap,
                 excluded=mask,
-                near=prep.near,
+                near=near,
             )
 
-        best = choose(excluded)
-        if best is None:
+        def choose(mask):
+            """The best (choice, close) over both kinds of frontier cells, or None."""
+            options = []
+            if far:
+                # prep.near spreads every frontier's labels; choose_goal skips the ones
+                # not in `far` and only tests the cells left in `far_labels`.
+                found = choose_kind(mask, far_labels, far, (p.reach_min, p.reach_max), prep.near)
+                if found is not None:
+                    options.append((found.score, 0, found, False))
+            if close:
+                found = choose_kind(mask, close_labels, close, (0.0, close_reach), close_near)
+                if found is not None:
+                    options.append((found.score, 1, found, True))
+            return min(options, key=lambda o: o[:2])[2:] if options else None
+
+        chosen = choose(excluded)
+        if chosen is None:
             return None
         kept = False
         if current_goal is not None:
             current = choose(self._all_but(current_goal, excluded))
-            if current is not None and current.score <= best.score + p.switch_margin:
-                best, kept = current, True
+            if current is not None and current[0].score <= chosen[0].score + p.switch_margin:
+                chosen, kept = current, True
+        best, is_close = chosen
         cells = extract_path(dist, best.cell)
         xs, ys = g.to_world(cells[:, 0], cells[:, 1])
         path = np.vstack([[x, y], np.column_stack([xs, ys])])
@@ -177,13 +237,14 @@ class MapPlanner:
         return Plan(
             (float(gx), float(gy)),
             path,
-            self._look_yaws(best, gx, gy),
+            self._look_yaws(best, gx, gy, is_close),
             best.cost,
             best.size * g.resolution,
             best.gain,
             len(frontiers),
             kept,
             (float(tx), float(ty)),
+            is_close,
         )
 
     def _unseen(self, labels, frontiers, views):
@@ -209,17 +270,36 @@ class MapPlanner:
                 seen[idx[line_of_sight(prep.classes, origin, targets)]] = True
         return _drop_cells(labels, frontiers, rows, cols, seen)
 
+    def _near(self, labels, points):
+        """(rows, cols, mask) of the labelled cells and which lie near `points` (x, y)."""
+        g = self.prepared.geometry
+        rows, cols = np.nonzero(labels)
+        xs, ys = g.to_world(rows, cols)
+        near = np.zeros(rows.shape, dtype=bool)
+        for px, py in points:
+            near |= np.hypot(xs - px, ys - py) <= self.params.blacklist_radius
+        return rows, cols, near
+
     def _without(self, labels, frontiers, points):
         """Labels and frontiers without the cells near `points` (x, y)."""
         if not len(points) or not frontiers:
             return labels, frontiers
-        g = self.prepared.geometry
-        rows, cols = np.nonzero(labels)
-        xs, ys = g.to_world(rows, cols)
-        dead = np.zeros(rows.shape, dtype=bool)
-        for px, py in points:
-            dead |= np.hypot(xs - px, ys - py) <= self.params.blacklist_radius
-        return _drop_cells(labels, frontiers, rows, cols, dead)
+        return _drop_cells(labels, frontiers, *self._near(labels, points))
+
+    def _split(self, labels, frontiers, points):
+        """(labels, frontiers) twice: the frontiers with no cell near `points` (x, y), and
+        the ones with some; a frontier is approached closely as a whole, or a view from
+        afar would graze along the rest of the same shadow's edge."""
+        if not len(points) or not frontiers:
+            return labels, frontiers, np.zeros_like(labels), []
+        rows, cols, near = self._near(labels, points)
+        hit = np.unique(labels[rows[near], cols[near]])
+        in_hit = np.isin(labels, hit)
+        far_labels = np.where(in_hit, 0, labels)
+        close_labels = np.where(in_hit, labels, 0)
+        far = [f for f in frontiers if f.label not in hit]
+        close = [f for f in frontiers if f.label in hit]
+        return far_labels, far, close_labels, close
 
     def _all_but(self, goal, excluded):
         """An exclusion mask leaving only the 3 x 3 cells around `goal` (x, y)."""
@@ -232,9 +312,16 @@ class MapPlanner:
             only |= excluded
         return only
 
-    def _look_yaws(self, choice, gx, gy):
-        """Headings that sweep the sensor over the frontier cells seen from the goal."""
-        sx, sy = self.prepared.geometry.to_world(choice.seen[:, 0], choice.seen[:, 1])
+    def _look_yaws(self, choice, gx, gy, close=False):
+        """Headings that sweep the sensor over the frontier cells seen from the goal; for
+        a close approach, over the unknown cells next to them (the robot stands at the
+        frontier, so the bearings of the frontier cells themselves say little)."""
+        cells = choice.seen
+        if close:
+            cells = unknown_neighbours(self.prepared.classes, cells)
+            if not len(cells):
+                cells = choice.seen
+        sx, sy = self.prepared.geometry.to_world(cells[:, 0], cells[:, 1])
         bearings = np.arctan2(sy - gy, sx - gx)
         p = self.params
         headings = sweep_headings(bearings, p.view_half_angle, 2 * p.view_half_angle)

@@ -23,9 +23,11 @@ def clearance_ahead(
     too_close = np.isneginf(r)
     valid = np.isfinite(r) & (r >= range_min) & (r <= range_max)
     if too_close.any():
-        # Without a range, take the beam's nearest measurable point as the hit.
+        # Without a range, take the beam's nearest measurable point as the hit (ahead of
+        # the robot's centre only: a wide scanner also looks sideways and back).
         lateral = np.abs(range_min * np.sin(angles[too_close]))
-        if (lateral <= half_width).any():
+        ahead = range_min * np.cos(angles[too_close]) + sensor_offset > 0
+        if ((lateral <= half_width) & ahead).any():
             return 0.0
     if not valid.any():
         return math.inf
