@@ -15,7 +15,8 @@ for each event). So each event happens at its time, or at most that much later.
 A --simple server may read its start time only after the jump to the goal's end (its ACTIVE
 status goes out just before): without a result there, the clock jumps one goal length on.
 
-Writes JSON lines {"topic", "clock", "msg"} to --out for feedback, cancel and result.
+Writes JSON lines {"topic", "clock", ...} to --out for feedback and result (with their
+"elapsed", "remaining", "updates", "status") and cancel.
 """
 
 import argparse
@@ -56,7 +57,14 @@ class ActionClock:
         topic, kind = topic_kind
         with self.cond:
             self.seen[kind].append(msg)
-            line = {"topic": topic, "clock": self.clock_ns / NS, "msg": str(msg)}
+            line = {"topic": topic, "clock": self.clock_ns / NS}
+            if kind == "feedback":
+                line["elapsed"] = msg.feedback.time_elapsed.to_sec()
+                line["remaining"] = msg.feedback.time_remaining.to_sec()
+            if kind == "result":
+                line["elapsed"] = msg.result.time_elapsed.to_sec()
+                line["updates"] = msg.result.updates_sent
+                line["status"] = msg.status.text
             self.out.write(json.dumps(line) + "\n")
             self.out.flush()
             self.cond.notify_all()

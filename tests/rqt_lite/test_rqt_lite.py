@@ -75,7 +75,7 @@ def test_rqt_plot_book_fields_to_png_with_samples(ros, tmp_path):
             return []
 
     ros.wait_for(lambda: received() == [count], 90, f"rqt_plot to receive {count} Twists")
-    assert ros.stop(plot, timeout=60) == 0, ros.output(plot)  # Ctrl-C: write and exit
+    assert ros.stop(plot, timeout=180) == 0, ros.output(plot)  # Ctrl-C: write and exit
     assert "rqt_plot: wrote" in ros.output(plot)
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     series = read_csv(samples)
