@@ -34,7 +34,7 @@ def on_virtual_display(ros, tmp_path, command):
     return RvizSession(command=command, env=ros.env, workdir=tmp_path, screen=(1024, 768))
 
 
-def quit_with_ctrl_c(session, timeout=60):
+def quit_with_ctrl_c(session, timeout=180):
     """SIGINT to the tool; returns its exit status (xvfb-run passes it on)."""
     os.kill(session.rviz_pid, signal.SIGINT)
     return session.proc.wait(timeout=timeout)
