@@ -129,6 +129,16 @@ def test_a_frontier_looked_at_twice_is_approached_closely_then_set_aside():
     assert explorer.excluded_frontiers(t + 10 * explorer.params.blacklist_timeout)
 
 
+def test_a_frontier_to_approach_closely_but_looked_at_from_afar_is_set_aside_too():
+    """The planner looks from afar at a frontier it cannot stand on: those looks count as
+    the close ones, so the frontier is not looked at in vain for ever."""
+    explorer = Explorer()
+    t = spun(explorer)
+    for _ in range(4):
+        t = look_at(explorer, t)
+    assert explorer.excluded_frontiers(t) == [(3.0, 0.0)]
+
+
 def test_nothing_left_but_set_aside_frontiers_retries_them_instead_of_stopping():
     explorer = Explorer()
     t = spun(explorer)

@@ -106,3 +106,21 @@ def test_unknown_neighbours_of_cells():
     found = unknown_neighbours(classes, [[1, 1], [3, 3]])
     assert found.tolist() == [[0, 0], [0, 1], [0, 2]]
     assert unknown_neighbours(classes, np.zeros((0, 2), dtype=int)).shape == (0, 2)
+
+
+def test_a_frontier_nobody_can_stand_on_is_still_looked_at_from_afar():
+    """A 0.4 m gap through a 0.3 m wall, unknown beyond: the frontier at its far end has
+    no traversable cell within a close approach, so it is planned for from afar."""
+    rows, cols = int(6 / RES), int(10 / RES)
+    data = np.zeros((rows, cols), dtype=np.int8)
+    ys, xs = (np.mgrid[0:rows, 0:cols] + 0.5) * RES
+    data[:2, :] = data[:, :2] = data[:, -2:] = 100
+    data[ys > 3.3] = -1  # beyond the wall
+    wall = (ys > 3.0) & (ys <= 3.3)
+    data[wall & ((xs < 4.8) | (xs > 5.2))] = 100
+    planner = planner_on(data)
+    far = planner.plan(5.0, 1.5)
+    assert far is not None and not far.close
+    again = planner.plan(5.0, 1.5, close_targets=[far.target])
+    assert again is not None and not again.close
+    assert again.goal == far.goal

@@ -251,12 +251,16 @@ class Explorer:
     def _arrived(self, now):
         gx, gy = self.plan.goal
         tx, ty = self.plan.target
-        close = self.plan.close
+        # A frontier already to be approached closely counts as such even when the planner
+        # found no goal on it and looked from afar again.
+        radius = self.dead_frontiers.radius
+        close = self.plan.close or any(
+            math.hypot(cx - tx, cy - ty) < radius for cx, cy in self.close_targets.active(now)
+        )
         self.goals_reached += 1
         self.events.append(f"reached goal ({gx:.2f}, {gy:.2f})")
         timeout = self.params.blacklist_timeout
         self.reached = [r for r in self.reached if now - r[2] < timeout]
-        radius = self.dead_frontiers.radius
         visits = sum(
             math.hypot(rx - tx, ry - ty) < radius and was_close == close
             for rx, ry, _, was_close in self.reached

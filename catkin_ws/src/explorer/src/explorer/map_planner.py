@@ -188,8 +188,6 @@ class MapPlanner:
         # a frontier along a wall can be approached too.
         close_reach = p.robot_radius + p.safety_margin + g.resolution
         close_near = None
-        if close:
-            close_near = approach_labels(close_labels, prep.classes, g.resolution, close_reach)
 
         def choose_kind(mask, kind_labels, kind_frontiers, reach, near):
             return choose_goal(
@@ -204,6 +202,29 @@ class MapPlanner:
                 excluded=mask,
                 near=near,
             )
+
+        if close:
+            close_near = approach_labels(close_labels, prep.classes, g.resolution, close_reach)
+            # A frontier nobody can stand on (along a wall, beyond a gap too narrow to pass)
+            # is still looked at from afar.
+            back = [
+                f
+                for f in close
+                if choose_kind(
+                    excluded,
+                    np.where(close_labels == f.label, close_labels, 0),
+                    [f],
+                    (0.0, close_reach),
+                    close_near,
+                )
+                is None
+            ]
+            if back:
+                moved = np.isin(close_labels, [f.label for f in back])
+                far_labels = np.where(moved, close_labels, far_labels)
+                close_labels = np.where(moved, 0, close_labels)
+                far = far + back
+                close = [f for f in close if f not in back]
 
         def choose(mask):
             """The best (choice, close) over both kinds of frontier cells, or None."""
