@@ -147,9 +147,11 @@ def test_bad_arguments_and_unwritable_target(ros, tmp_path):
     _, yaml_path = served_map(tmp_path)
     ros.start(["rosrun", "map_server", "map_server", str(yaml_path)])
     ros.wait_for_topic("/map")
+    # A folder that does not exist is refused before any wait, with the command that fixes it.
     done = run_saver(ros, ["-f", str(tmp_path / "missing_dir" / "map")], cwd=tmp_path)
-    assert done.returncode == 1
-    assert "could not save the map" in done.stderr and "missing_dir" in done.stderr
+    assert done.returncode == 2
+    assert "missing_dir" in done.stderr and "mkdir -p" in done.stderr
+    assert not (tmp_path / "missing_dir").exists()
 
 
 def test_service_only_timeout_explains(ros, tmp_path):
