@@ -10,6 +10,11 @@ HERE = Path(__file__).resolve().parent
 PYTHON = "/usr/bin/python3"
 TWIST = "{linear: {x: 0.5}, angular: {z: -0.3}}"
 CALLER = "/rqt_lite_tests"
+# Runs argv[1:] with SIGINT's default action (KeyboardInterrupt in Python).
+DEFAULT_SIGINT = (
+    "import os, signal, sys; signal.signal(signal.SIGINT, signal.SIG_DFL); "
+    "os.execvp(sys.argv[1], sys.argv[1:])"
+)
 
 
 def read_csv(path):
@@ -63,10 +68,10 @@ def test_rqt_plot_book_fields_to_png_with_samples(ros, tmp_path):
     count = 30
     ros.start([PYTHON, str(HERE / "tick_publisher.py"), "--count", str(count)])
     ros.wait_for_topic("cmd_vel")
-    plot = ros.start(
-        ["rqt_plot", *fields, "--output", png, "--duration", "600", "--csv", samples],
-        name="rqt_plot",
-    )
+    # Ctrl-C ends the sampling: SIGINT at its default (a test run from a shell's background
+    # job inherits it ignored, and rqt_plot, file mode, leaves Python's default in place).
+    cmd = ["rqt_plot", *fields, "--output", png, "--duration", "600", "--csv", samples]
+    plot = ros.start([PYTHON, "-c", DEFAULT_SIGINT, *map(str, cmd)], name="rqt_plot")
 
     def received():
         try:
