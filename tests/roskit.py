@@ -111,9 +111,22 @@ class RosGraph:
                 _kill_group(proc)
         return proc.returncode
 
-    def close(self):
-        for proc in reversed(self.procs):
-            self.stop(proc, timeout=5)
+    def close(self, timeout=5):
+        """Ctrl-C to every node at once (then the roscore), each group killed if it is not
+        gone within `timeout` wall seconds: one slow node does not hold up the others."""
+        nodes = [p for p in self.procs if p is not self.core and p.poll() is None]
+        for proc in nodes:
+            try:
+                os.killpg(proc.pid, signal.SIGINT)
+            except ProcessLookupError:
+                pass
+        deadline = time.monotonic() + timeout
+        for proc in nodes:
+            try:
+                proc.wait(timeout=max(0.0, deadline - time.monotonic()))
+            except subprocess.TimeoutExpired:
+                _kill_group(proc)
+        self.stop(self.core, timeout=timeout)
 
     # -- waiting -----------------------------------------------------------------
     def master(self):

@@ -47,6 +47,22 @@ def fancy_client(ros, clock, *args):
     return feedback, (int(state), status, float(elapsed), int(updates))
 
 
+def server_feedback(clock):
+    """The server's feedback [(elapsed, remaining)] as the action clock recorded it."""
+    out = Path(clock.args[clock.args.index("--out") + 1])
+    records = [json.loads(line) for line in out.read_text().splitlines()]
+    return [(r["elapsed"], r["remaining"]) for r in records if r["topic"] == "/timer/feedback"]
+
+
+def assert_client_printed_in_order(printed, sent):
+    """The client prints the server's feedback in order, maybe without the last ones: the
+    result comes on its own topic and may overtake them, and actionlib's client drops
+    feedback for a goal that is already done."""
+    assert printed, "the client printed no feedback"
+    rounded = [(round(e, 6), round(r, 6)) for e, r in sent]
+    assert [(round(e, 6), round(r, 6)) for e, r in printed] == rounded[: len(printed)]
+
+
 def assert_feedback_once_a_second(feedback, goal):
     """Feedback k at k + LAG s (k >= 1), at most one server nap late; remaining = goal - elapsed."""
     for k, (e, r) in enumerate(feedback):
@@ -57,23 +73,27 @@ def assert_feedback_once_a_second(feedback, goal):
 
 def test_five_second_goal_succeeds_with_five_feedbacks(ros, master):
     clock = timer_on_sim_time(ros, master, "fancy_action_server.py", "--goal", 5)
-    feedback, (state, status, elapsed, updates) = fancy_client(ros, clock)
+    printed, (state, status, elapsed, updates) = fancy_client(ros, clock)
     assert (state, status, updates) == (3, "Timer completed successfully", 5)
     assert 5.0 - 1e-6 <= elapsed <= 5.0 + POLL + 1e-6
+    feedback = server_feedback(clock)
     assert len(feedback) == 5
     assert_feedback_once_a_second(feedback, 5.0)
+    assert_client_printed_in_order(printed, feedback)
 
 
 def test_cancel_after_three_seconds_preempts(ros, master):
     options = ["--goal", 5, "--cancel-at", 3]
     clock = timer_on_sim_time(ros, master, "fancy_action_server.py", *options)
-    feedback, (state, status, elapsed, updates) = fancy_client(ros, clock, "--preempt-after", "3")
+    printed, (state, status, elapsed, updates) = fancy_client(ros, clock, "--preempt-after", "3")
     assert (state, status) == (2, "Timer preempted")
+    feedback = server_feedback(clock)
     # The cancel goes out at 3 s of sim time; the server notices it by the end of its nap,
     # well before feedback 3 would go out at 3 + LAG.
     assert 3.0 - 1e-6 <= elapsed <= 3.0 + 2 * POLL + 1e-6
     assert updates == 3 and len(feedback) == 3
     assert_feedback_once_a_second(feedback, 5.0)
+    assert_client_printed_in_order(printed, feedback)
 
 
 def test_too_long_and_negative_goals_abort_at_once(ros, master):
@@ -99,9 +119,7 @@ def test_timer_runs_on_sim_time(ros, master):
     # The server's feedback as the clock saw it. (The client may print fewer: the clock
     # runs through the 50 s in a wall second or so, faster than a loaded machine lets the
     # client print, and actionlib's client keeps only the last 10 feedback messages queued.)
-    out = Path(clock.args[clock.args.index("--out") + 1])
-    records = [json.loads(line) for line in out.read_text().splitlines()]
-    feedback = [(r["elapsed"], r["remaining"]) for r in records if r["topic"] == "/timer/feedback"]
+    feedback = server_feedback(clock)
     assert len(feedback) == 50
     assert_feedback_once_a_second(feedback, 50.0)
     assert set(printed) <= {(round(e, 6), round(r, 6)) for e, r in feedback}
