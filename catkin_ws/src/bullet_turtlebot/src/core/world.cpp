@@ -215,6 +215,10 @@ struct World::Bullet {
 };
 
 World::World(const WorldSpec& spec) : solids_(build_solids(spec)), bullet_(std::make_unique<Bullet>()) {
+  // Nothing here asks Bullet for overlapping pairs (all queries are ray, sweep, contact and
+  // box tests against the tree), so pair finding on insertion is skipped: with tens of
+  // thousands of touching wall boxes it was most of a large world's load time.
+  bullet_->broadphase.m_deferedcollide = true;
   bool first = true;
   for (size_t i = 0; i < solids_.size(); ++i) {
     const Solid& s = solids_[i];
