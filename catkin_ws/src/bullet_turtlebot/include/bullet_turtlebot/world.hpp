@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -58,6 +59,11 @@ class RayFan {
   bool cast(const Eigen::Vector3d& dir, double max_distance, RayHit* hit, bool include_floor = true) const;
   // The same with the ray's azimuth bin known (bin_of(atan2(dir.y, dir.x))), e.g. per column.
   int bin_of(double azimuth) const;
+  // The same for an azimuth given relative to the fan's yaw, within ±half_fov: no angle
+  // wrapping, for rays at fixed angles from the sensor (a scan's beams).
+  int bin_of_relative(double angle_from_yaw) const {
+    return static_cast<int>(std::floor((angle_from_yaw + half_fov_) / bin_width_));
+  }
   bool cast_in_bin(int bin, const Eigen::Vector3d& dir, double max_distance, RayHit* hit,
                    bool include_floor = true) const;
   size_t candidates() const { return candidates_; }

@@ -35,7 +35,7 @@ void scan_ranges(const World& world, const LaserConfig& config, const SensorPose
   for (int i = 0; i < config.samples; ++i) {
     const Eigen::Vector2d& b = beams[static_cast<size_t>(i)];
     const Eigen::Vector3d dir(cy * b.x() - sy * b.y(), sy * b.x() + cy * b.y(), 0.0);
-    const int bin = fan.bin_of(pose.yaw + config.angle_min() + i * config.angle_increment());
+    const int bin = fan.bin_of_relative(config.angle_min() + i * config.angle_increment());
     RayHit hit;
     float value;
     if (!fan.cast_in_bin(bin, dir, config.range_max, &hit, false)) {

@@ -215,6 +215,10 @@ struct World::Bullet {
 };
 
 World::World(const WorldSpec& spec) : solids_(build_solids(spec)), bullet_(std::make_unique<Bullet>()) {
+  // Nothing here asks Bullet for overlapping pairs (all queries are ray, sweep, contact and
+  // box tests against the tree), so pair finding on insertion is skipped: with tens of
+  // thousands of touching wall boxes it was most of a large world's load time.
+  bullet_->broadphase.m_deferedcollide = true;
   bool first = true;
   for (size_t i = 0; i < solids_.size(); ++i) {
     const Solid& s = solids_[i];
@@ -376,6 +380,52 @@ void solid_sector(const Solid& s, const Eigen::Vector2d& o, double* centre, doub
   }
 }
 
+// The part of the plane a fan's rays can reach: a circular sector (apex at the origin,
+// azimuths yaw ± half_fov, radius max_distance), its bounding box, and a cheap conservative
+// test on a solid's bounding circle.
+struct FanWedge {
+  Eigen::Vector2d apex, lo, hi;
+  Eigen::Vector2d left, right;  // boundary directions at yaw + half_fov and yaw - half_fov
+  double reach;
+  bool narrow;  // under a half-plane: the wedge is the intersection of two half-planes
+
+  FanWedge(const Eigen::Vector2d& o, double max_distance, double yaw, double half_fov)
+      : apex(o),
+        left(std::cos(yaw + half_fov), std::sin(yaw + half_fov)),
+        right(std::cos(yaw - half_fov), std::sin(yaw - half_fov)),
+        reach(max_distance),
+        narrow(half_fov < M_PI / 2) {
+    if (!narrow) {
+      lo = o - Eigen::Vector2d::Constant(max_distance);
+      hi = o + Eigen::Vector2d::Constant(max_distance);
+      return;
+    }
+    lo = hi = o;
+    for (const Eigen::Vector2d& p : {Eigen::Vector2d(o + max_distance * left), Eigen::Vector2d(o + max_distance * right)}) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    for (int quarter = -2; quarter <= 2; ++quarter) {  // the arc's extreme points along x and y
+      const double a = quarter * M_PI / 2;
+      if (std::abs(normalize_angle(a - yaw)) <= half_fov) {
+        const Eigen::Vector2d p = o + max_distance * Eigen::Vector2d(std::cos(a), std::sin(a));
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+      }
+    }
+  }
+
+  bool may_hold(const Solid& s) const {
+    const Eigen::Vector2d rel(s.center.x() - apex.x(), s.center.y() - apex.y());
+    const double radius = s.kind == Solid::kCylinder ? s.half.x() : std::hypot(s.half.x(), s.half.y());
+    if (rel.squaredNorm() > (reach + radius) * (reach + radius)) return false;
+    if (!narrow) return true;
+    const double beyond_left = left.x() * rel.y() - left.y() * rel.x();     // > 0: left of the left edge
+    const double beyond_right = right.y() * rel.x() - right.x() * rel.y();  // > 0: right of the right edge
+    return beyond_left <= radius && beyond_right <= radius;
+  }
+};
+
 constexpr double kBinWidth = 0.5 * M_PI / 180.0;
 constexpr double kAngleSlack = 1e-6;
 
@@ -385,8 +435,9 @@ RayFan::RayFan(const World& world, const Eigen::Vector3d& origin, double max_dis
     : world_(world), origin_(origin), yaw_(yaw), half_fov_(std::min(half_fov, M_PI)), bin_width_(kBinWidth) {
   const int bins = std::max(1, static_cast<int>(std::ceil(2 * half_fov_ / bin_width_)) + 1);
   bins_.resize(static_cast<size_t>(bins));
-  const Eigen::Vector3d lo(origin.x() - max_distance, origin.y() - max_distance, -1e3);
-  const Eigen::Vector3d hi(origin.x() + max_distance, origin.y() + max_distance, 1e3);
+  const FanWedge wedge(Eigen::Vector2d(origin.x(), origin.y()), max_distance, yaw_, half_fov_);
+  const Eigen::Vector3d lo(wedge.lo.x(), wedge.lo.y(), -1e3);
+  const Eigen::Vector3d hi(wedge.hi.x(), wedge.hi.y(), 1e3);
   std::vector<int> found = world.solids_in_box(lo, hi);
   struct Candidate {
     Entry entry;
@@ -395,6 +446,9 @@ RayFan::RayFan(const World& world, const Eigen::Vector3d& origin, double max_dis
   std::vector<Candidate> list;
   const Eigen::Vector2d o(origin.x(), origin.y());
   for (int index : found) {
+    // Most solids the bounding box holds lie outside the wedge: drop them before the
+    // trigonometry below, which costs more than the rays that would test them.
+    if (!wedge.may_hold(world.solids()[static_cast<size_t>(index)])) continue;
     Candidate c;
     c.entry.solid = index;
     solid_sector(world.solids()[index], o, &c.centre, &c.lo, &c.hi, &c.entry.min_distance);

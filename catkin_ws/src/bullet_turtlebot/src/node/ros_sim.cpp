@@ -1,4 +1,5 @@
 #include "ros_sim.hpp"
+#include "batch_scheduling.hpp"
 
 #include <bullet_turtlebot/BumperEvent.h>
 #include <nav_msgs/Odometry.h>
@@ -422,6 +423,9 @@ int RosSimulator::run() {
   ROS_INFO("simulator: world %s, %zu solids, robot at (%.2f, %.2f, %.2f), speed %g%s", world_source_.c_str(),
            sim_.world().solids().size(), sim_.pose().x, sim_.pose().y, sim_.pose().yaw, speed_,
            speed_ == 0 ? " (as fast as possible)" : "");
+  if (speed_ == 0 && !use_batch_scheduling()) {
+    ROS_WARN("simulator: SCHED_BATCH refused; running with the default scheduling");
+  }
   // Publish the first clock tick and state before any step, so nothing sees time 0.
   publish_clock();
   publish_odometry();
