@@ -1,5 +1,6 @@
 #include "ros_sim.hpp"
 #include "batch_scheduling.hpp"
+#include "checked_params.hpp"
 
 #include <bullet_turtlebot/BumperEvent.h>
 #include <nav_msgs/Odometry.h>
@@ -15,6 +16,7 @@
 #include <std_srvs/Trigger.h>
 #include <tf2_msgs/TFMessage.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -128,37 +130,40 @@ RosSimulator::RosSimulator(ros::NodeHandle nh, ros::NodeHandle pnh, std::shared_
 }
 
 void RosSimulator::load_parameters() {
-  speed_ = param(pnh_, "speed", 1.0);
-  if (!(speed_ >= 0) || !std::isfinite(speed_)) {
-    ROS_WARN("~speed must be >= 0 (0 = as fast as possible); using 1.0");
-    speed_ = 1.0;
-  }
-  command_lead_ = param(pnh_, "wait_for_commands", 0.0);
-  if (!(command_lead_ >= 0) || !std::isfinite(command_lead_)) {
-    ROS_WARN("~wait_for_commands must be >= 0 sim seconds (0 = off); using 0");
-    command_lead_ = 0.0;
-  }
+  constexpr double kHuge = 1e6;
+  speed_ = checked_number(pnh_, "speed", 1.0, 0.0, kHuge,
+                          "0 (as fast as possible) or more sim seconds per wall second");
+  command_lead_ = checked_number(pnh_, "wait_for_commands", 0.0, 0.0, kHuge, "0 (off) or more sim seconds");
   paused_ = param(pnh_, "start_paused", false);
-  sim_.set_time(param(pnh_, "start_time", 1.0));
-  if (sim_.now() <= 0) sim_.set_time(1.0);  // /clock must never read 0
-  rates_.odom = param(pnh_, "odom_rate", rates_.odom);
-  rates_.scan = param(pnh_, "scan_rate", rates_.scan);
-  rates_.camera = param(pnh_, "camera_rate", rates_.camera);
-  rates_.static_tf = param(pnh_, "static_tf_rate", rates_.static_tf);
+  // ROS time holds unsigned 32-bit seconds; /clock must never read 0.
+  sim_.set_time(checked_number(pnh_, "start_time", 1.0, above(0.0), 4.0e9, "a sim time in (0, 4e9] s"));
+  // A rate above the physics rate would claim samples the simulation never takes.
+  const double physics_rate = 1.0 / sim_.config().step;
+  const std::string rate_rule = "0 (off) up to the physics rate, " + std::to_string(physics_rate) + " Hz";
+  rates_.odom = checked_number(pnh_, "odom_rate", rates_.odom, 0.0, physics_rate, rate_rule);
+  rates_.scan = checked_number(pnh_, "scan_rate", rates_.scan, 0.0, physics_rate, rate_rule);
+  rates_.camera = checked_number(pnh_, "camera_rate", rates_.camera, 0.0, physics_rate, rate_rule);
+  rates_.static_tf = checked_number(pnh_, "static_tf_rate", rates_.static_tf, 0.0, physics_rate, rate_rule);
   publish_static_tf_ = param(pnh_, "publish_static_tf", true);
-  laser_.samples = std::max(1, param(pnh_, "scan_samples", laser_.samples));
-  laser_.fov = param(pnh_, "scan_fov_deg", 58.0) * M_PI / 180.0;
-  laser_.range_min = param(pnh_, "range_min", laser_.range_min);
-  laser_.range_max = param(pnh_, "range_max", laser_.range_max);
+  laser_.samples = checked_int(pnh_, "scan_samples", laser_.samples, 1, 100000, "a beam count in [1, 100000]");
+  laser_.fov = checked_number(pnh_, "scan_fov_deg", 58.0, above(0.0), 360.0, "degrees in (0, 360]") * M_PI / 180.0;
+  laser_.range_max =
+      checked_number(pnh_, "range_max", laser_.range_max, above(0.0), 1000.0, "metres in (0, 1000]");
+  laser_.range_min = checked_number(pnh_, "range_min", std::min(laser_.range_min, laser_.range_max / 2), 0.0,
+                                    std::nextafter(laser_.range_max, 0.0), "metres in [0, range_max)");
   const bool sensor_noise = param(pnh_, "sensor_noise", true);
-  laser_.noise = sensor_noise ? param(pnh_, "range_noise", 0.003) : 0.0;
-  laser_.noise_quadratic = sensor_noise ? param(pnh_, "range_noise_quadratic", 0.0019) : 0.0;
-  camera_.width = std::max(2, param(pnh_, "camera_width", camera_.width));
-  camera_.height = std::max(2, param(pnh_, "camera_height", camera_.height));
+  const std::string noise_rule = "a standard deviation in [0, 1]";
+  laser_.noise = sensor_noise ? checked_number(pnh_, "range_noise", 0.003, 0.0, 1.0, noise_rule) : 0.0;
+  laser_.noise_quadratic =
+      sensor_noise ? checked_number(pnh_, "range_noise_quadratic", 0.0019, 0.0, 1.0, noise_rule) : 0.0;
+  // 2048 x 2048 bounds the depth and colour buffers at about 30 MB (the Kinect is 640 x 480).
+  const std::string size_rule = "pixels in [2, 2048]";
+  camera_.width = checked_int(pnh_, "camera_width", camera_.width, 2, 2048, size_rule);
+  camera_.height = checked_int(pnh_, "camera_height", camera_.height, 2, 2048, size_rule);
   camera_.hfov = laser_.fov;
   camera_.depth_min = laser_.range_min;
-  huge_linear_ = param(pnh_, "huge_linear", huge_linear_);
-  huge_angular_ = param(pnh_, "huge_angular", huge_angular_);
+  huge_linear_ = checked_number(pnh_, "huge_linear", huge_linear_, above(0.0), kHuge, "m/s above 0");
+  huge_angular_ = checked_number(pnh_, "huge_angular", huge_angular_, above(0.0), kHuge, "rad/s above 0");
   use_sim_time_before_ = param(pnh_, "use_sim_time_before_launch", std::string());
 }
 

@@ -3,11 +3,48 @@
 
 #include <csignal>
 #include <cstdio>
+#include <limits>
 #include <memory>
 
 #include "bullet_turtlebot/shipped_worlds.hpp"
 #include "bullet_turtlebot/world_spec.hpp"
+#include "checked_params.hpp"
 #include "ros_sim.hpp"
+
+namespace {
+
+// The base, odometry and start pose, each checked (see checked_params.hpp).
+void read_base_parameters(const ros::NodeHandle& pnh, bullet_turtlebot::SimulationConfig* config,
+                          bullet_turtlebot::Pose2D* start) {
+  namespace bt = bullet_turtlebot;
+  config->seed = static_cast<std::uint64_t>(
+      bt::checked_int(pnh, "seed", 1, 0, std::numeric_limits<int>::max(), "a whole number >= 0"));
+  pnh.param("odom_noise", config->odometry.enabled, true);
+  const std::string noise_rule = "a fraction in [0, 1]";
+  bt::OdometryNoise& odom = config->odometry;
+  odom.linear = bt::checked_number(pnh, "odom_linear_noise", odom.linear, 0.0, 1.0, noise_rule);
+  odom.angular = bt::checked_number(pnh, "odom_angular_noise", odom.angular, 0.0, 1.0, noise_rule);
+  odom.angular_per_linear =
+      bt::checked_number(pnh, "odom_angular_per_linear_noise", odom.angular_per_linear, 0.0, 1.0, noise_rule);
+  odom.yaw_scale = bt::checked_number(pnh, "odom_yaw_scale_error", odom.yaw_scale, -1.0, 1.0, "a fraction in [-1, 1]");
+  config->watchdog = bt::checked_number(pnh, "watchdog", config->watchdog, 0.0, 1e6, "0 or more sim seconds");
+  bt::DriveLimits& limits = config->limits;
+  const double above_zero = bt::above(0.0);
+  limits.max_linear = bt::checked_number(pnh, "max_linear", limits.max_linear, above_zero, 100.0, "m/s in (0, 100]");
+  limits.max_angular =
+      bt::checked_number(pnh, "max_angular", limits.max_angular, above_zero, 100.0, "rad/s in (0, 100]");
+  limits.accel_linear =
+      bt::checked_number(pnh, "accel_linear", limits.accel_linear, above_zero, 1000.0, "m/s^2 in (0, 1000]");
+  limits.accel_angular =
+      bt::checked_number(pnh, "accel_angular", limits.accel_angular, above_zero, 1000.0, "rad/s^2 in (0, 1000]");
+  config->step = 1.0 / bt::checked_number(pnh, "physics_rate", 100.0, 10.0, 10000.0, "Hz in [10, 10000]");
+  const std::string place_rule = "metres within 1e6 of the origin";
+  start->x = bt::checked_number(pnh, "x", start->x, -1e6, 1e6, place_rule);
+  start->y = bt::checked_number(pnh, "y", start->y, -1e6, 1e6, place_rule);
+  start->yaw = bt::checked_number(pnh, "yaw", start->yaw, -1e3, 1e3, "radians within 1000");
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   // Our own SIGINT handler: roscpp's would shut the node down at once, and the simulator
@@ -33,32 +70,15 @@ int main(int argc, char** argv) {
   }
 
   bt::SimulationConfig config;
-  int seed = 1;
-  pnh.param("seed", seed, seed);
-  config.seed = static_cast<std::uint64_t>(seed);
-  pnh.param("odom_noise", config.odometry.enabled, true);
-  pnh.param("odom_linear_noise", config.odometry.linear, config.odometry.linear);
-  pnh.param("odom_angular_noise", config.odometry.angular, config.odometry.angular);
-  pnh.param("odom_angular_per_linear_noise", config.odometry.angular_per_linear, config.odometry.angular_per_linear);
-  pnh.param("odom_yaw_scale_error", config.odometry.yaw_scale, config.odometry.yaw_scale);
-  pnh.param("watchdog", config.watchdog, config.watchdog);
-  pnh.param("max_linear", config.limits.max_linear, config.limits.max_linear);
-  pnh.param("max_angular", config.limits.max_angular, config.limits.max_angular);
-  pnh.param("accel_linear", config.limits.accel_linear, config.limits.accel_linear);
-  pnh.param("accel_angular", config.limits.accel_angular, config.limits.accel_angular);
-  double rate = 100.0;
-  pnh.param("physics_rate", rate, rate);
-  if (!(rate >= 10.0 && rate <= 10000.0)) {
-    ROS_WARN("~physics_rate must lie in [10, 10000] Hz; using 100");
-    rate = 100.0;
-  }
-  config.step = 1.0 / rate;
-
   bt::Pose2D start = spec.has_start ? spec.start : bt::Pose2D{};
   const bool chosen = spec.has_start || pnh.hasParam("x") || pnh.hasParam("y");
-  pnh.param("x", start.x, start.x);
-  pnh.param("y", start.y, start.y);
-  pnh.param("yaw", start.yaw, start.yaw);
+  try {
+    read_base_parameters(pnh, &config, &start);
+  } catch (const bt::ParameterError& e) {
+    ROS_FATAL("%s", e.what());
+    std::fprintf(stderr, "simulator: %s\n", e.what());
+    return 2;
+  }
 
   try {
     auto world = std::make_shared<const bt::World>(spec);
@@ -77,6 +97,10 @@ int main(int argc, char** argv) {
     const int status = simulator.run();
     ros::shutdown();
     return status;
+  } catch (const bt::ParameterError& e) {
+    ROS_FATAL("%s", e.what());
+    std::fprintf(stderr, "simulator: %s\n", e.what());
+    return 2;
   } catch (const std::invalid_argument& e) {
     ROS_FATAL("world file '%s': %s", world_path.c_str(), e.what());
     std::fprintf(stderr, "simulator: world file '%s': %s\n", world_path.c_str(), e.what());
