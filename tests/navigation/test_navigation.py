@@ -1,0 +1,116 @@
+"""Chapter 10 end to end: the simulator in the maze, map_server with the maze's map,
+amcl_lite and move_base_lite (amcl_demo.launch), faster than real time. amcl starts from an
+rviz-style initial pose that is off; goals are sent through the move_base action and
+checked against the simulator's ground truth. Figures are printed."""
+
+import json
+from pathlib import Path
+
+import pytest
+
+HERE = Path(__file__).resolve().parent
+REPO = HERE.parent.parent
+PYTHON = "/usr/bin/python3"
+# The simulator waits for move_base if it lags (wait_for_commands), so results per sim
+# second do not depend on the machine's load.
+SPEED = 4
+START = (0.75, 0.75, 0.0)  # the maze world's start
+# Corridor cells of the maze's 1.5 m grid: a straight leg, a leg round a corner, and back.
+GOALS = [(3.75, 0.75, 1.5708), (2.25, 2.25, 3.1416), (0.75, 0.75, 0.0)]
+# Limits: move_base's goal tolerance is 0.10 m / 0.10 rad; amcl's estimate adds its error.
+# Facing a flat wall, the Kinect's 58 degree view cannot tell where along the wall the
+# robot is, so at some goals the estimate is off by up to about 0.15 m along it.
+GOAL_POSITION_LIMIT = 0.25
+GOAL_YAW_LIMIT = 0.2
+AMCL_TRACKING_LIMIT = 0.2  # m, largest error after the first two updates while driving
+
+
+def start_navigation(ros):
+    ros.start(
+        [
+            "roslaunch",
+            "rosbook_demo",
+            "amcl_demo.launch",
+            "rviz:=false",
+            f"speed:={SPEED}",
+            "wait_for_commands:=0.3",
+        ],
+        name="amcl_demo",
+    )
+    ros.wait_for_topic("amcl_pose", timeout=90)
+    ros.wait_for_service("move_base/make_plan", timeout=90)
+
+
+def run_client(ros, tmp_path, *args, timeout=240):
+    out = tmp_path / "nav.jsonl"
+    client = ros.start([PYTHON, str(HERE / "nav_client.py"), "--out", str(out), *args])
+    ros.wait_for(
+        lambda: client.poll() is not None or (out.exists() and '"done"' in out.read_text()),
+        timeout,
+        "the navigation client to finish",
+        interval=0.5,
+    )
+    assert client.wait(10) == 0, ros.output(client)[-3000:]
+    return [json.loads(line) for line in out.read_text().splitlines()]
+
+
+def goal_args(goals):
+    return [a for g in goals for a in ("--goal", ",".join(map(str, g)))]
+
+
+@pytest.mark.timeout(300)
+def test_amcl_converges_from_an_offset_pose_and_goals_are_reached(ros, tmp_path):
+    start_navigation(ros)
+    # An rviz 2D Pose Estimate 0.3 m and 0.2 rad off the true start.
+    offset = f"{START[0] + 0.2},{START[1] - 0.22},{START[2] + 0.2}"
+    records = run_client(ros, tmp_path, "--initial-pose", offset, *goal_args(GOALS))
+    goals = [r for r in records if "goal" in r]
+    for r in goals:
+        print(
+            f"goal {r['goal']}: {r['state']} in {r['sim_seconds']:.1f} sim s, position error "
+            f"{r['position_error']:.3f} m, yaw error {r['yaw_error']:.3f} rad, amcl error max "
+            f"{r['amcl_max_error']:.3f} m, last {r['amcl_last_error']:.3f} m"
+        )
+    assert len(goals) == len(GOALS)
+    for r in goals:
+        assert r["state"] == "SUCCEEDED", r
+        assert r["position_error"] <= GOAL_POSITION_LIMIT, r
+        assert r["yaw_error"] <= GOAL_YAW_LIMIT, r
+    # Converged: from the second goal on (the first absorbs the initial offset).
+    for r in goals[1:]:
+        assert r["amcl_max_error"] <= AMCL_TRACKING_LIMIT, r
+
+
+@pytest.mark.timeout(200)
+def test_unreachable_goals_abort_with_a_reason(ros, tmp_path):
+    start_navigation(ros)
+    # Inside the maze's outer wall (x = 0), and off the map.
+    records = run_client(ros, tmp_path, *goal_args([(0.02, 3.0, 0.0), (30.0, 30.0, 0.0)]))
+    goals = [r for r in records if "goal" in r]
+    print([(r["state"], r["text"], round(r["sim_seconds"], 1)) for r in goals])
+    assert [r["state"] for r in goals] == ["ABORTED", "ABORTED"]
+    assert "obstacle" in goals[0]["text"]
+    assert "outside the map" in goals[1]["text"]
+
+
+@pytest.mark.timeout(300)
+def test_patrol_completes_one_loop(ros, tmp_path):
+    start_navigation(ros)
+    patrol = ros.start(
+        [
+            "rosrun",
+            "patrolbot",
+            "patrol.py",
+            "--waypoints",
+            str(REPO / "catkin_ws/src/patrolbot/config/maze_waypoints.yaml"),
+            "--loops",
+            "1",
+        ],
+        name="patrol",
+    )
+    ros.wait_for(lambda: patrol.poll() is not None, 240, "patrol.py to finish a loop", 0.5)
+    log = ros.output(patrol)
+    print(log[-2000:])
+    assert patrol.returncode == 0, log
+    assert log.count("patrol: reached") == 3, log
+    assert "loop 1 done" in log
