@@ -25,17 +25,17 @@ GOAL_YAW_LIMIT = 0.2
 AMCL_TRACKING_LIMIT = 0.2  # m, largest error after the first two updates while driving
 
 
-def start_navigation(ros):
+def start_navigation(ros, package="rosbook_demo", launch_file="amcl_demo.launch"):
     ros.start(
         [
             "roslaunch",
-            "rosbook_demo",
-            "amcl_demo.launch",
+            package,
+            launch_file,
             "rviz:=false",
             f"speed:={SPEED}",
             "wait_for_commands:=0.3",
         ],
-        name="amcl_demo",
+        name=launch_file,
     )
     ros.wait_for_topic("amcl_pose", timeout=90)
     ros.wait_for_service("move_base/make_plan", timeout=90)
@@ -94,8 +94,10 @@ def test_unreachable_goals_abort_with_a_reason(ros, tmp_path):
 
 
 @pytest.mark.timeout(300)
-def test_patrol_completes_one_loop(ros, tmp_path):
-    start_navigation(ros)
+def test_patrol_completes_one_loop_in_turtlebot_in_stage(ros, tmp_path):
+    # The book's chapter 10 commands: turtlebot_in_stage.launch (navigation on by default),
+    # then patrol.py.
+    start_navigation(ros, "turtlebot_stage", "turtlebot_in_stage.launch")
     patrol = ros.start(
         [
             "rosrun",
