@@ -30,6 +30,8 @@ class Recorder:
         self.lock = threading.Lock()
         self.truth = []  # (t, x, y, yaw), in arrival order (sim time increases)
         self.errors = []  # (t, amcl position error)
+        self.obstacle = None  # (x, y): record how near the robot's centre comes to it
+        self.nearest = float("inf")
         rospy.Subscriber("base_pose_ground_truth", Odometry, self.on_truth, queue_size=50)
         rospy.Subscriber("amcl_pose", PoseWithCovarianceStamped, self.on_amcl, queue_size=10)
 
@@ -40,6 +42,9 @@ class Recorder:
                 (msg.header.stamp.to_sec(), p.position.x, p.position.y, yaw_of(p.orientation))
             )
             del self.truth[:-2000]
+            if self.obstacle is not None:
+                d = math.hypot(p.position.x - self.obstacle[0], p.position.y - self.obstacle[1])
+                self.nearest = min(self.nearest, d)
 
     def truth_at(self, t):
         with self.lock:
@@ -81,10 +86,13 @@ def main():
     parser.add_argument("--initial-pose", help="x,y,yaw sent on initialpose first")
     parser.add_argument("--settle", type=float, default=0.0, help="sim s to turn in place first")
     parser.add_argument("--preempt-after", type=float, help="sim s before goal 2 preempts goal 1")
+    parser.add_argument("--obstacle", help="x,y: report the robot's nearest approach to it")
     parser.add_argument("--goal-timeout", type=float, default=120.0, help="sim s per goal")
     args = parser.parse_args(rospy.myargv()[1:])
     rospy.init_node("nav_client")
     recorder = Recorder()
+    if args.obstacle:
+        recorder.obstacle = tuple(float(v) for v in args.obstacle.split(","))
     client = actionlib.SimpleActionClient("move_base", MoveBaseAction)
     client.wait_for_server()
     while not rospy.is_shutdown() and rospy.get_time() == 0:
@@ -136,6 +144,7 @@ def main():
             "amcl_max_error": max(errors) if errors else None,
             "amcl_last_error": errors[-1] if errors else None,
             "amcl_updates": len(errors),
+            "nearest_to_obstacle": recorder.nearest if recorder.obstacle else None,
         }
         if not finished:
             client.cancel_goal()

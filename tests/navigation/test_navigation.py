@@ -25,7 +25,7 @@ GOAL_YAW_LIMIT = 0.2
 AMCL_TRACKING_LIMIT = 0.2  # m, largest error after the first two updates while driving
 
 
-def start_navigation(ros, package="rosbook_demo", launch_file="amcl_demo.launch"):
+def start_navigation(ros, package="rosbook_demo", launch_file="amcl_demo.launch", *args):
     ros.start(
         [
             "roslaunch",
@@ -34,6 +34,7 @@ def start_navigation(ros, package="rosbook_demo", launch_file="amcl_demo.launch"
             "rviz:=false",
             f"speed:={SPEED}",
             "wait_for_commands:=0.3",
+            *args,
         ],
         name=launch_file,
     )
@@ -116,3 +117,31 @@ def test_patrol_completes_one_loop_in_turtlebot_in_stage(ros, tmp_path):
     assert patrol.returncode == 0, log
     assert log.count("patrol: reached") == 3, log
     assert "loop 1 done" in log
+
+
+MAZE = REPO / "catkin_ws/src/bullet_turtlebot/worlds/maze.yaml"
+
+
+@pytest.mark.timeout(200)
+def test_a_box_the_map_lacks_is_driven_around(ros, tmp_path):
+    # The maze world with a 0.4 m box in the middle of the first corridor; amcl and
+    # move_base get the maze's map without it.
+    box = (2.25, 0.75)
+    world = tmp_path / "maze_with_box.yaml"
+    world.write_text(
+        MAZE.read_text().replace("image: maze.pgm", f"image: {MAZE.parent / 'maze.pgm'}")
+        + f"boxes:\n  - {{pose: [{box[0]}, {box[1]}, 0], size: [0.4, 0.4, 0.5]}}\n"
+    )
+    start_navigation(
+        ros, "rosbook_demo", "amcl_demo.launch", f"world:={world}", f"map_file:={MAZE}"
+    )
+    records = run_client(ros, tmp_path, "--obstacle", f"{box[0]},{box[1]}", *goal_args(GOALS[:1]))
+    (r,) = [r for r in records if "goal" in r]
+    print(
+        f"box: {r['state']} in {r['sim_seconds']:.1f} sim s, nearest approach of the robot's "
+        f"centre to the box's centre {r['nearest_to_obstacle']:.2f} m"
+    )
+    assert r["state"] == "SUCCEEDED", r
+    assert r["position_error"] <= GOAL_POSITION_LIMIT, r
+    # Half the box (0.2 m) plus the Kobuki's radius (0.18 m): closer would be a collision.
+    assert r["nearest_to_obstacle"] > 0.2 + 0.18, r
