@@ -82,16 +82,44 @@ def test_amcl_converges_from_an_offset_pose_and_goals_are_reached(ros, tmp_path)
         assert r["amcl_max_error"] <= AMCL_TRACKING_LIMIT, r
 
 
-@pytest.mark.timeout(200)
-def test_unreachable_goals_abort_with_a_reason(ros, tmp_path):
+@pytest.mark.timeout(240)
+def test_move_base_interface_plans_costmaps_preemption_and_aborts(ros, tmp_path):
     start_navigation(ros)
-    # Inside the maze's outer wall (x = 0), and off the map.
-    records = run_client(ros, tmp_path, *goal_args([(0.02, 3.0, 0.0), (30.0, 30.0, 0.0)]))
+    # ~make_plan: a path round the maze's walls, from the start to the first goal.
+    plan = ros.run(
+        [
+            "rosservice",
+            "call",
+            "/move_base/make_plan",
+            "{start: {header: {frame_id: map}, pose: {position: {x: 0.75, y: 0.75}, "
+            "orientation: {w: 1}}}, goal: {header: {frame_id: map}, pose: {position: "
+            "{x: 2.25, y: 2.25}, orientation: {w: 1}}}, tolerance: 0.0}",
+        ],
+        timeout=60,
+    ).stdout
+    assert plan.count("position:") > 20, plan[:2000]
+    # The global costmap: the maze's map, inflated.
+    costmap = ros.echo("/move_base/global_costmap/costmap", count=1, timeout=60)[0]["msg"]
+    assert costmap["header"]["frame_id"] == "map"
+    assert costmap["info"]["width"] > 0 and 100 in costmap["data"]
+    ros.wait_for_topic("/move_base/local_costmap/costmap")
+    # A new goal preempts the current one; then goals that cannot be reached abort: inside
+    # the maze's outer wall (x = 0), and off the map.
+    records = run_client(
+        ros,
+        tmp_path,
+        "--preempt-after",
+        "2",
+        *goal_args([(9.75, 9.75, 0.0), (2.25, 2.25, 3.1416), (0.02, 3.0, 0.0), (30.0, 30.0, 0.0)]),
+    )
     goals = [r for r in records if "goal" in r]
     print([(r["state"], r["text"], round(r["sim_seconds"], 1)) for r in goals])
-    assert [r["state"] for r in goals] == ["ABORTED", "ABORTED"]
-    assert "obstacle" in goals[0]["text"]
-    assert "outside the map" in goals[1]["text"]
+    assert records[0]["preempted_goal_state_before"] == "ACTIVE"
+    assert goals[0]["state"] == "SUCCEEDED", goals[0]
+    assert goals[0]["position_error"] <= GOAL_POSITION_LIMIT, goals[0]
+    assert [r["state"] for r in goals[1:]] == ["ABORTED", "ABORTED"]
+    assert "obstacle" in goals[1]["text"]
+    assert "outside the map" in goals[2]["text"]
 
 
 @pytest.mark.timeout(300)
