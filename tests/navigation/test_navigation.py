@@ -4,6 +4,7 @@ rviz-style initial pose that is off; goals are sent through the move_base action
 checked against the simulator's ground truth. Figures are printed."""
 
 import json
+import signal
 from pathlib import Path
 
 import pytest
@@ -145,6 +146,17 @@ def test_patrol_completes_one_loop_in_turtlebot_in_stage(ros, tmp_path):
     assert patrol.returncode == 0, log
     assert log.count("patrol: reached") == 3, log
     assert "loop 1 done" in log
+
+    # Patrolling for ever, Ctrl-C ends patrol.py at once and cancels its goal.
+    patrol = ros.start(["rosrun", "patrolbot", "patrol.py"], name="patrol_forever")
+
+    def statuses():
+        return [s["status"] for s in ros.echo("/move_base/status")[0]["msg"]["status_list"]]
+
+    ros.wait_for(lambda: 1 in statuses(), 60, "patrol.py's goal to be active", 0.5)  # ACTIVE
+    assert ros.stop(patrol, signal.SIGINT) == 0, ros.output(patrol)
+    # PREEMPTED (2) or RECALLED (8): the goal was cancelled, so the robot stops.
+    ros.wait_for(lambda: {2, 8} & set(statuses()), 60, "the goal to be cancelled", 0.5)
 
 
 MAZE = REPO / "catkin_ws/src/bullet_turtlebot/worlds/maze.yaml"
