@@ -39,3 +39,14 @@ def test_obstacles_the_scan_adds_block_the_gap():
     result = planner.plan((1.0, 0.5), (3.0, 0.5))
     assert result.path is None and not result.goal_invalid
     assert "no path" in result.reason
+
+
+def test_a_goal_covered_only_by_scan_obstacles_is_worth_a_retry():
+    values, geometry = corridor_map()
+    planner = GlobalPlanner(values, geometry)
+    marked = np.zeros(values.shape, dtype=bool)
+    marked[10, 60] = True  # (3.0, 0.5)
+    planner.update_obstacles(marked)
+    result = planner.plan((1.0, 0.5), (3.0, 0.5))
+    assert result.path is None and not result.goal_invalid
+    assert "the scan sees" in result.reason

@@ -36,7 +36,8 @@ class GlobalPlanner:
             raise ValueError("inflation_radius must be >= robot_radius")
         self.geometry = geometry
         self.classes = classify(values, self.params.free_threshold, self.params.occupied_threshold)
-        self.costmap = self._inflate(self.classes)
+        self.static_costmap = self._inflate(self.classes)
+        self.costmap = self.static_costmap
 
     def _inflate(self, classes):
         p = self.params
@@ -81,6 +82,12 @@ class GlobalPlanner:
         goal_cell = tuple(int(v) for v in g.to_cell(*goal))
         if not g.contains(*goal_cell):
             return PlanResult(None, f"goal ({goal[0]:.2f}, {goal[1]:.2f}) is outside the map", True)
+        if self.static_costmap.traversable[goal_cell] and not self.costmap.traversable[goal_cell]:
+            # Only the scan's obstacles cover it: they may be gone (or misplaced by a poor
+            # pose) next time, so this is worth a recovery and a retry, not an abort.
+            return PlanResult(
+                None, f"goal ({goal[0]:.2f}, {goal[1]:.2f}) is blocked by an obstacle the scan sees"
+            )
         if not self.costmap.traversable[goal_cell]:
             clearance = float(self.costmap.clearance[goal_cell])
             why = (
