@@ -33,6 +33,7 @@ ALIAS_LAUNCHES = {
     "turtlebot_stage/launch/turtlebot_in_stage.launch": "bullet_turtlebot",
     "turtlebot_teleop/launch/keyboard_teleop.launch": "teleop_bot",
     "rospy_tutorials/launch/talker_listener.launch": "basics",
+    "turtlebot_navigation/launch/amcl_demo.launch": "rosbook_demo",
 }
 
 

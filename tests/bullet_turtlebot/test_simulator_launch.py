@@ -13,7 +13,7 @@ def launch(ros, name, *args):
 
 
 def test_turtlebot_in_stage_launch_brings_up_the_maze(ros):
-    launch(ros, "turtlebot_in_stage.launch", "rviz:=false", "speed:=5")
+    launch(ros, "turtlebot_in_stage.launch", "rviz:=false", "speed:=5", "nav:=false")
     assert ros.run(["rosparam", "get", "/use_sim_time"]).stdout.strip() == "true"
     assert "robot_description" in ros.run(["rosparam", "list"]).stdout
     static = ros.echo("/tf_static", count=1)[0]["msg"]["transforms"]
@@ -31,7 +31,7 @@ def test_playground_launch_with_start_pose_args(ros):
 
 
 def test_rosbag_of_scan_and_tf_alone_holds_the_whole_chain(ros, tmp_path):
-    launch(ros, "turtlebot_in_stage.launch", "rviz:=false", "speed:=2")
+    launch(ros, "turtlebot_in_stage.launch", "rviz:=false", "speed:=2", "nav:=false")
     bag_path = tmp_path / "data.bag"
     rec = ros.start(["rosbag", "record", "-O", str(bag_path), "/scan", "/tf"], name="record")
     ros.wait_for(lambda: bag_path.with_suffix(".bag.active").exists(), 30, "rosbag to start")

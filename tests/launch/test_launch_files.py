@@ -37,6 +37,23 @@ LAUNCHES = {
         False,
         False,
     ),
+    "catkin_ws/src/rosbook_demo/launch/amcl_demo.launch": (
+        ["rviz:=false", "speed:=2"],
+        False,
+        False,
+    ),
+    "catkin_ws/src/rosbook_demo/launch/navigation.launch": (
+        ["map_file:={repo}/maps/office.yaml"],
+        False,
+        False,
+    ),
+    "catkin_ws/src/amcl_lite/launch/amcl.launch": ([], False, False),
+    "catkin_ws/src/move_base_lite/launch/move_base.launch": ([], False, False),
+    "catkin_ws/src/book_aliases/turtlebot_navigation/launch/amcl_demo.launch": (
+        ["rviz:=false", "speed:=2"],
+        False,
+        False,
+    ),
     "catkin_ws/src/basics/launch/talker_listener.launch": ([], False, False),
     "catkin_ws/src/book_aliases/rospy_tutorials/launch/talker_listener.launch": ([], False, False),
     "catkin_ws/src/book_aliases/turtlebot_gazebo/launch/turtlebot_playground.launch": (

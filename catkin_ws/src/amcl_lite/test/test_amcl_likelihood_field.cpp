@@ -1,0 +1,44 @@
+#include <gtest/gtest.h>
+
+#include "amcl_lite/likelihood_field.h"
+
+using amcl_lite::GridMap;
+using amcl_lite::LikelihoodField;
+
+namespace {
+GridMap emptyMap(int w, int h) {
+  GridMap m;
+  m.resolution = 0.1;
+  m.width = w;
+  m.height = h;
+  m.cells.assign(w * h, 0);
+  return m;
+}
+}  // namespace
+
+TEST(LikelihoodField, DistanceIsEuclideanToTheNearestObstacleAndCapped) {
+  GridMap m = emptyMap(50, 50);
+  m.cells[25 * 50 + 25] = 100;
+  const LikelihoodField f(m, 1.0);
+  EXPECT_NEAR(f.distance(2.55, 2.55), 0.0, 1e-6);
+  EXPECT_NEAR(f.distance(2.55 + 0.3, 2.55 + 0.4), 0.5, 1e-5);
+  EXPECT_NEAR(f.distance(0.05, 0.05), 1.0, 1e-6);  // capped at max_dist
+  EXPECT_NEAR(f.distance(-3.0, 0.0), 1.0, 1e-6);   // outside the map
+}
+
+TEST(LikelihoodField, FreeCellsExcludeUnknownAndObstacles) {
+  GridMap m = emptyMap(4, 1);
+  m.cells = {0, -1, 100, 10};
+  const LikelihoodField f(m, 1.0);
+  EXPECT_EQ(f.freeCells().size(), 2u);
+  EXPECT_TRUE(f.isFree(0.05, 0.05));
+  EXPECT_FALSE(f.isFree(0.15, 0.05));
+  EXPECT_FALSE(f.isFree(0.25, 0.05));
+}
+
+TEST(LikelihoodField, RefusesMalformedMaps) {
+  GridMap m = emptyMap(4, 4);
+  m.cells.pop_back();
+  EXPECT_THROW(LikelihoodField(m, 1.0), std::invalid_argument);
+  EXPECT_THROW(LikelihoodField(emptyMap(4, 4), 0.0), std::invalid_argument);
+}

@@ -1,0 +1,158 @@
+#!/usr/bin/python3
+"""Test helper: optionally sets amcl's initial pose, sends move_base goals one after another
+(or one goal and a second that preempts it), and writes one JSON line per goal: the final
+state and status text, the sim seconds it took, the true pose at the end (the simulator's
+base_pose_ground_truth, in the world frame the test maps share), and the largest and last
+amcl position error against the truth while it drove."""
+
+import argparse
+import bisect
+import json
+import math
+import threading
+
+import actionlib
+import rospy
+from actionlib_msgs.msg import GoalStatus
+from geometry_msgs.msg import PoseWithCovarianceStamped
+from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
+from nav_msgs.msg import Odometry
+
+STATES = {v: k for k, v in vars(GoalStatus).items() if k.isupper() and isinstance(v, int)}
+
+
+def yaw_of(q):
+    return math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
+
+
+class Recorder:
+    def __init__(self):
+        self.lock = threading.Lock()
+        self.truth = []  # (t, x, y, yaw), in arrival order (sim time increases)
+        self.errors = []  # (t, amcl position error)
+        self.obstacle = None  # (x, y): record how near the robot's centre comes to it
+        self.nearest = float("inf")
+        rospy.Subscriber("base_pose_ground_truth", Odometry, self.on_truth, queue_size=50)
+        rospy.Subscriber("amcl_pose", PoseWithCovarianceStamped, self.on_amcl, queue_size=10)
+
+    def on_truth(self, msg):
+        p = msg.pose.pose
+        with self.lock:
+            self.truth.append(
+                (msg.header.stamp.to_sec(), p.position.x, p.position.y, yaw_of(p.orientation))
+            )
+            del self.truth[:-2000]
+            if self.obstacle is not None:
+                d = math.hypot(p.position.x - self.obstacle[0], p.position.y - self.obstacle[1])
+                self.nearest = min(self.nearest, d)
+
+    def truth_at(self, t):
+        with self.lock:
+            if not self.truth:
+                return None
+            i = bisect.bisect_left([s[0] for s in self.truth], t)
+            i = min(max(i, 0), len(self.truth) - 1)
+            return self.truth[i]
+
+    def on_amcl(self, msg):
+        t = msg.header.stamp.to_sec()
+        truth = self.truth_at(t)
+        if truth is None or abs(truth[0] - t) > 0.1:
+            return
+        p = msg.pose.pose.position
+        with self.lock:
+            self.errors.append((t, math.hypot(p.x - truth[1], p.y - truth[2])))
+
+    def errors_since(self, t0):
+        with self.lock:
+            return [e for t, e in self.errors if t >= t0]
+
+
+def goal_of(x, y, yaw):
+    goal = MoveBaseGoal()
+    goal.target_pose.header.frame_id = "map"
+    goal.target_pose.header.stamp = rospy.Time.now()
+    goal.target_pose.pose.position.x = x
+    goal.target_pose.pose.position.y = y
+    goal.target_pose.pose.orientation.z = math.sin(yaw / 2)
+    goal.target_pose.pose.orientation.w = math.cos(yaw / 2)
+    return goal
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--goal", action="append", default=[], help="x,y,yaw (repeatable)")
+    parser.add_argument("--initial-pose", help="x,y,yaw sent on initialpose first")
+    parser.add_argument("--settle", type=float, default=0.0, help="sim s to turn in place first")
+    parser.add_argument("--preempt-after", type=float, help="sim s before goal 2 preempts goal 1")
+    parser.add_argument("--obstacle", help="x,y: report the robot's nearest approach to it")
+    parser.add_argument("--goal-timeout", type=float, default=120.0, help="sim s per goal")
+    args = parser.parse_args(rospy.myargv()[1:])
+    rospy.init_node("nav_client")
+    recorder = Recorder()
+    if args.obstacle:
+        recorder.obstacle = tuple(float(v) for v in args.obstacle.split(","))
+    client = actionlib.SimpleActionClient("move_base", MoveBaseAction)
+    client.wait_for_server()
+    while not rospy.is_shutdown() and rospy.get_time() == 0:
+        rospy.sleep(0.05)
+    out = open(args.out, "a")
+    if args.initial_pose:
+        x, y, yaw = (float(v) for v in args.initial_pose.split(","))
+        pub = rospy.Publisher("initialpose", PoseWithCovarianceStamped, queue_size=1, latch=True)
+        msg = PoseWithCovarianceStamped()
+        msg.header.frame_id = "map"
+        msg.header.stamp = rospy.Time.now()
+        msg.pose.pose.position.x, msg.pose.pose.position.y = x, y
+        msg.pose.pose.orientation.z, msg.pose.pose.orientation.w = (
+            math.sin(yaw / 2),
+            math.cos(yaw / 2),
+        )
+        # rviz's 2D Pose Estimate covariance: 0.5 m and pi/12 rad standard deviations.
+        msg.pose.covariance[0] = msg.pose.covariance[7] = 0.25
+        msg.pose.covariance[35] = (math.pi / 12) ** 2
+        rospy.sleep(1.0)  # sim time: let amcl's subscription connect (latched anyway)
+        pub.publish(msg)
+        rospy.sleep(1.0)
+    goals = [tuple(float(v) for v in g.split(",")) for g in args.goal]
+    if args.preempt_after is not None:
+        t0 = rospy.get_time()
+        client.send_goal(goal_of(*goals[0]))
+        rospy.sleep(args.preempt_after)
+        first_state = client.get_state()
+        goals = goals[1:]
+        out.write(json.dumps({"preempted_goal_state_before": STATES.get(first_state)}) + "\n")
+    for goal in goals:
+        t0 = rospy.get_time()
+        client.send_goal(goal_of(*goal))
+        finished = client.wait_for_result(rospy.Duration(args.goal_timeout))
+        t1 = rospy.get_time()
+        truth = recorder.truth_at(t1)
+        errors = recorder.errors_since(t0)
+        record = {
+            "goal": goal,
+            "finished": finished,
+            "state": STATES.get(client.get_state()),
+            "text": client.get_goal_status_text(),
+            "sim_seconds": t1 - t0,
+            "truth": truth[1:] if truth else None,
+            "position_error": math.hypot(truth[1] - goal[0], truth[2] - goal[1]) if truth else None,
+            "yaw_error": abs(math.atan2(math.sin(truth[3] - goal[2]), math.cos(truth[3] - goal[2])))
+            if truth
+            else None,
+            "amcl_max_error": max(errors) if errors else None,
+            "amcl_last_error": errors[-1] if errors else None,
+            "amcl_updates": len(errors),
+            "nearest_to_obstacle": recorder.nearest if recorder.obstacle else None,
+        }
+        if not finished:
+            client.cancel_goal()
+        out.write(json.dumps(record) + "\n")
+        out.flush()
+    out.write(json.dumps({"done": True}) + "\n")
+    out.close()
+
+
+if __name__ == "__main__":
+    main()

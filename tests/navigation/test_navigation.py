@@ -1,0 +1,187 @@
+"""Chapter 10 end to end: the simulator in the maze, map_server with the maze's map,
+amcl_lite and move_base_lite (amcl_demo.launch), faster than real time. amcl starts from an
+rviz-style initial pose that is off; goals are sent through the move_base action and
+checked against the simulator's ground truth. Figures are printed."""
+
+import json
+import signal
+from pathlib import Path
+
+import pytest
+
+HERE = Path(__file__).resolve().parent
+REPO = HERE.parent.parent
+PYTHON = "/usr/bin/python3"
+# The simulator waits for move_base if it lags (wait_for_commands), so results per sim
+# second do not depend on the machine's load.
+SPEED = 4
+START = (0.75, 0.75, 0.0)  # the maze world's start
+# Corridor cells of the maze's 1.5 m grid: a straight leg, a leg round a corner, and back.
+GOALS = [(3.75, 0.75, 1.5708), (2.25, 2.25, 3.1416), (0.75, 0.75, 0.0)]
+# Limits: move_base's goal tolerance is 0.10 m / 0.10 rad; amcl's estimate adds its error.
+# Facing a flat wall, the Kinect's 58 degree view cannot tell where along the wall the
+# robot is, so at some goals the estimate is off by up to about 0.15 m along it.
+GOAL_POSITION_LIMIT = 0.25
+GOAL_YAW_LIMIT = 0.2
+AMCL_TRACKING_LIMIT = 0.2  # m, largest error after the first two updates while driving
+
+
+def start_navigation(ros, package="rosbook_demo", launch_file="amcl_demo.launch", *args):
+    ros.start(
+        [
+            "roslaunch",
+            package,
+            launch_file,
+            "rviz:=false",
+            f"speed:={SPEED}",
+            "wait_for_commands:=0.3",
+            *args,
+        ],
+        name=launch_file,
+    )
+    ros.wait_for_topic("amcl_pose", timeout=90)
+    ros.wait_for_service("move_base/make_plan", timeout=90)
+
+
+def run_client(ros, tmp_path, *args, timeout=240):
+    out = tmp_path / "nav.jsonl"
+    client = ros.start([PYTHON, str(HERE / "nav_client.py"), "--out", str(out), *args])
+    ros.wait_for(
+        lambda: client.poll() is not None or (out.exists() and '"done"' in out.read_text()),
+        timeout,
+        "the navigation client to finish",
+        interval=0.5,
+    )
+    assert client.wait(10) == 0, ros.output(client)[-3000:]
+    return [json.loads(line) for line in out.read_text().splitlines()]
+
+
+def goal_args(goals):
+    return [a for g in goals for a in ("--goal", ",".join(map(str, g)))]
+
+
+@pytest.mark.timeout(300)
+def test_amcl_converges_from_an_offset_pose_and_goals_are_reached(ros, tmp_path):
+    start_navigation(ros)
+    # An rviz 2D Pose Estimate 0.3 m and 0.2 rad off the true start.
+    offset = f"{START[0] + 0.2},{START[1] - 0.22},{START[2] + 0.2}"
+    records = run_client(ros, tmp_path, "--initial-pose", offset, *goal_args(GOALS))
+    goals = [r for r in records if "goal" in r]
+    for r in goals:
+        print(
+            f"goal {r['goal']}: {r['state']} in {r['sim_seconds']:.1f} sim s, position error "
+            f"{r['position_error']:.3f} m, yaw error {r['yaw_error']:.3f} rad, amcl error max "
+            f"{r['amcl_max_error']:.3f} m, last {r['amcl_last_error']:.3f} m"
+        )
+    assert len(goals) == len(GOALS)
+    for r in goals:
+        assert r["state"] == "SUCCEEDED", r
+        assert r["position_error"] <= GOAL_POSITION_LIMIT, r
+        assert r["yaw_error"] <= GOAL_YAW_LIMIT, r
+    # Converged: from the second goal on (the first absorbs the initial offset).
+    for r in goals[1:]:
+        assert r["amcl_max_error"] <= AMCL_TRACKING_LIMIT, r
+
+
+@pytest.mark.timeout(240)
+def test_move_base_interface_plans_costmaps_preemption_and_aborts(ros, tmp_path):
+    start_navigation(ros)
+    # ~make_plan: a path round the maze's walls, from the start to the first goal.
+    plan = ros.run(
+        [
+            "rosservice",
+            "call",
+            "/move_base/make_plan",
+            "{start: {header: {frame_id: map}, pose: {position: {x: 0.75, y: 0.75}, "
+            "orientation: {w: 1}}}, goal: {header: {frame_id: map}, pose: {position: "
+            "{x: 2.25, y: 2.25}, orientation: {w: 1}}}, tolerance: 0.0}",
+        ],
+        timeout=60,
+    ).stdout
+    assert plan.count("position:") > 20, plan[:2000]
+    # The global costmap: the maze's map, inflated.
+    costmap = ros.echo("/move_base/global_costmap/costmap", count=1, timeout=60)[0]["msg"]
+    assert costmap["header"]["frame_id"] == "map"
+    assert costmap["info"]["width"] > 0 and 100 in costmap["data"]
+    ros.wait_for_topic("/move_base/local_costmap/costmap")
+    # A new goal preempts the current one; then goals that cannot be reached abort: inside
+    # the maze's outer wall (x = 0), and off the map.
+    records = run_client(
+        ros,
+        tmp_path,
+        "--preempt-after",
+        "2",
+        *goal_args([(9.75, 9.75, 0.0), (2.25, 2.25, 3.1416), (0.02, 3.0, 0.0), (30.0, 30.0, 0.0)]),
+    )
+    goals = [r for r in records if "goal" in r]
+    print([(r["state"], r["text"], round(r["sim_seconds"], 1)) for r in goals])
+    assert records[0]["preempted_goal_state_before"] == "ACTIVE"
+    assert goals[0]["state"] == "SUCCEEDED", goals[0]
+    assert goals[0]["position_error"] <= GOAL_POSITION_LIMIT, goals[0]
+    assert [r["state"] for r in goals[1:]] == ["ABORTED", "ABORTED"]
+    assert "obstacle" in goals[1]["text"]
+    assert "outside the map" in goals[2]["text"]
+
+
+@pytest.mark.timeout(300)
+def test_patrol_completes_one_loop_in_turtlebot_in_stage(ros, tmp_path):
+    # The book's chapter 10 commands: turtlebot_in_stage.launch (navigation on by default),
+    # then patrol.py.
+    start_navigation(ros, "turtlebot_stage", "turtlebot_in_stage.launch")
+    patrol = ros.start(
+        [
+            "rosrun",
+            "patrolbot",
+            "patrol.py",
+            "--waypoints",
+            str(REPO / "catkin_ws/src/patrolbot/config/maze_waypoints.yaml"),
+            "--loops",
+            "1",
+        ],
+        name="patrol",
+    )
+    ros.wait_for(lambda: patrol.poll() is not None, 240, "patrol.py to finish a loop", 0.5)
+    log = ros.output(patrol)
+    print(log[-2000:])
+    assert patrol.returncode == 0, log
+    assert log.count("patrol: reached") == 3, log
+    assert "loop 1 done" in log
+
+    # Patrolling for ever, Ctrl-C ends patrol.py at once and cancels its goal.
+    patrol = ros.start(["rosrun", "patrolbot", "patrol.py"], name="patrol_forever")
+
+    def statuses():
+        return [s["status"] for s in ros.echo("/move_base/status")[0]["msg"]["status_list"]]
+
+    ros.wait_for(lambda: 1 in statuses(), 60, "patrol.py's goal to be active", 0.5)  # ACTIVE
+    assert ros.stop(patrol, signal.SIGINT) == 0, ros.output(patrol)
+    # PREEMPTED (2) or RECALLED (8): the goal was cancelled, so the robot stops.
+    ros.wait_for(lambda: {2, 8} & set(statuses()), 60, "the goal to be cancelled", 0.5)
+
+
+MAZE = REPO / "catkin_ws/src/bullet_turtlebot/worlds/maze.yaml"
+
+
+@pytest.mark.timeout(200)
+def test_a_box_the_map_lacks_is_driven_around(ros, tmp_path):
+    # The maze world with a 0.4 m box in the middle of the first corridor; amcl and
+    # move_base get the maze's map without it.
+    box = (2.25, 0.75)
+    world = tmp_path / "maze_with_box.yaml"
+    world.write_text(
+        MAZE.read_text().replace("image: maze.pgm", f"image: {MAZE.parent / 'maze.pgm'}")
+        + f"boxes:\n  - {{pose: [{box[0]}, {box[1]}, 0], size: [0.4, 0.4, 0.5]}}\n"
+    )
+    start_navigation(
+        ros, "rosbook_demo", "amcl_demo.launch", f"world:={world}", f"map_file:={MAZE}"
+    )
+    records = run_client(ros, tmp_path, "--obstacle", f"{box[0]},{box[1]}", *goal_args(GOALS[:1]))
+    (r,) = [r for r in records if "goal" in r]
+    print(
+        f"box: {r['state']} in {r['sim_seconds']:.1f} sim s, nearest approach of the robot's "
+        f"centre to the box's centre {r['nearest_to_obstacle']:.2f} m"
+    )
+    assert r["state"] == "SUCCEEDED", r
+    assert r["position_error"] <= GOAL_POSITION_LIMIT, r
+    # Half the box (0.2 m) plus the Kobuki's radius (0.18 m): closer would be a collision.
+    assert r["nearest_to_obstacle"] > 0.2 + 0.18, r
