@@ -2,7 +2,8 @@
 or beyond what the simulator can honour ends it at start-up with exit code 2 and one line
 naming the parameter, the value and what is allowed; no simulator quietly runs with nonsense.
 Each row: private parameters given to `rosrun bullet_turtlebot simulator`, and the parameter
-the error must name. One roscore serves every row (each row clears the simulator's private ones first)."""
+the error must name. One roscore serves every row; each row clears the simulator's private
+parameters first."""
 
 import pytest
 from roskit import RosGraph
