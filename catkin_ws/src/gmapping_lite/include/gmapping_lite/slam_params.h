@@ -21,6 +21,7 @@ struct SlamParams {
   double occ_thresh = 0.25;       // occupancy above this is published as occupied
   double xmin = -100, ymin = -100, xmax = 100, ymax = 100;  // initial map bounds
   unsigned seed = 42;
+  bool loop_closure = true;  // the pose-graph back end (not gmapping's; ~loop_closure)
 };
 
 }  // namespace gmapping_lite
