@@ -179,27 +179,10 @@ bool LoopCloser::find(const std::vector<const TrajectoryNode*>& chain,
   // Most of what the old map can check must agree: at least a point per degree of freedom,
   // and twice as many points on mapped walls as in space the old scans saw free.
   if (r.matched < 3 || r.matched < 2 * r.contradicting) return false;
-  // No other place in the window may rival the match: the best score among the poses outside
-  // its own uncertainty (three standard deviations of the match's information, so the length
-  // of a corridor, where any place fits as well, is not a rival) must fall short by more than
-  // comparing that many places could produce by chance: log(count), in nats.
+  // No other place in the window may rival the match (see ScanMatcher::margin).
   const Information info = matcher_.information(refined, points, {});
-  double runner_up = -std::numeric_limits<double>::infinity();
-  for (const auto& c : grid) {
-    const double d[3] = {c.pose.x - top->pose.x, c.pose.y - top->pose.y,
-                         normalizeAngle(c.pose.theta - top->pose.theta)};
-    // The grid's own spacing blurs the peak: distances are counted beyond one step.
-    const double shrink[3] = {std::max(0.0, std::fabs(d[0]) - step_xy) * (d[0] < 0 ? -1 : 1),
-                              std::max(0.0, std::fabs(d[1]) - step_xy) * (d[1] < 0 ? -1 : 1),
-                              std::max(0.0, std::fabs(d[2]) - step_theta) * (d[2] < 0 ? -1 : 1)};
-    double m2 = 0.0;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) m2 += shrink[i] * info.m[i][j] * shrink[j];
-    if (m2 <= 9.0) continue;
-    runner_up = std::max(runner_up, c.value);
-  }
-  r.margin = top->value - runner_up;
-  if (std::isfinite(runner_up) && r.margin < std::log(double(grid.size()))) return false;
+  r.margin = ScanMatcher::margin(grid, *top, info, step_xy, step_theta);
+  if (r.margin < std::log(double(grid.size()))) return false;
   const Pose2& old = chain[static_cast<std::size_t>(anchor)]->pose;
   edge->from = anchor;
   edge->to = n - 1;

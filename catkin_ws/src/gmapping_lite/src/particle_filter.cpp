@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <numeric>
 
 namespace gmapping_lite {
@@ -123,9 +121,16 @@ double ParticleFilter::rescue(const GridMap& map, const Pose2& predicted, const 
     if (c.value > top->value) top = &c;
   Pose2 found;
   const double found_score = matcher_.optimizeFrom(top->pose, predicted, points, &found, prior);
+  // At least a point per degree of freedom, and twice as many points agreeing with the map as
+  // contradicting it.
   int matched = 0, contradicting = 0;
   matcher_.agreement(found, points, &matched, &contradicting);
-  if (found_score <= score || matched < 2 * contradicting) return score;
+  if (found_score <= score || matched < 3 || matched < 2 * contradicting) return score;
+  // The window must hold one place that fits, not several (a pillar fits from any side): the
+  // same test as a loop closure's, against the scan's own information at the found pose.
+  if (ScanMatcher::margin(grid, *top, matcher_.information(found, points, {}), step_xy,
+                          step_theta) < std::log(double(grid.size())))
+    return score;
   *corrected = found;
   return found_score;
 }
@@ -194,8 +199,6 @@ void ParticleFilter::backEnd(const ScanPoints& points, const OdometryPrior& prio
 
   PoseEdge edge;
   const bool found = loop_closer_.find(chain, loops_, &edge, &report->loop);
-  if (getenv("GL_DEBUG") && report->loop.tried)  // DEBUG
-    std::fprintf(stderr, "LOOP %.3f cand %d win %.3f %.3f matched %d contra %d margin %.1f acc %d edge %d->%d meas %.3f %.3f %.3f cur %.3f %.3f %.3f\n", newest.stamp, report->loop.candidates, report->loop.window_xy, report->loop.window_theta, report->loop.matched, report->loop.contradicting, report->loop.margin, report->loop.accepted, edge.from, edge.to, edge.measurement.x, edge.measurement.y, edge.measurement.theta, found ? chain[edge.from]->pose.x : 0.0, found ? chain[edge.from]->pose.y : 0.0, 0.0);
   if (!found) return;
   loops_.push_back(edge);
   closeLoop(chain, report);
@@ -321,8 +324,17 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
       p.pose = predicted;
       p.drift_xy2 = prior.sigma_xy * prior.sigma_xy;
       p.drift_theta2 = prior.sigma_theta * prior.sigma_theta;
-      // Its scan is drawn only if the pose is known to a cell at the scan's typical range.
-      p.placed = prior.sigma_xy + prior.sigma_theta * mean_range <= params_.delta;
+      // Its scan is drawn if the pose is known to a cell at the scan's typical range, or if
+      // most of the scan ends in space the map has never seen: a scan into new territory (open
+      // floor, a new aisle) extends the map at odometry's pose, the best there is; not drawing
+      // it would leave nothing to match the next scans against (in open space no match would
+      // ever succeed again) while the drift only grows. A scan that mostly overlaps the map
+      // would blur it at an uncertain pose and is left out.
+      int matched = 0, contradicting = 0;
+      matcher_.prepare(p.map, predicted, points);
+      matcher_.agreement(predicted, points, &matched, &contradicting);
+      p.placed = prior.sigma_xy + prior.sigma_theta * mean_range <= params_.delta ||
+                 2 * (matched + contradicting) <= static_cast<int>(points.points.size());
     }
     p.information = matcher_.information(p.pose, points, prior);
     double sc = 0.0;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 
 namespace gmapping_lite {
@@ -58,7 +57,6 @@ class LogMixTable {
 };
 
 const LogMixTable logMix;
-const LogMixTable matchMix(getenv("GL_EPS") ? atof(getenv("GL_EPS")) : kNullLog);  // DEBUG
 
 // Solves the symmetric 3x3 system h x = g by Cramer's rule; false when singular.
 bool solve3(const double h[3][3], const double g[3], double x[3]) {
@@ -179,7 +177,7 @@ double ScanMatcher::pointLogLikelihood(const Pose2& pose, const ScanPoints& scan
                                        double inv) const {
   // A contradiction scores as a match at the field's radius (the worst a match can score at
   // this kernel); an unseen end point half as badly (no evidence either way, in log terms).
-  const double contradict = matchMix(field_.cap2() * inv), unknown = 0.5 * contradict;
+  const double contradict = logMix(field_.cap2() * inv), unknown = 0.5 * contradict;
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
   double total = 0.0;
   for (const auto& p : scan.points) {
@@ -188,7 +186,7 @@ double ScanMatcher::pointLogLikelihood(const Pose2& pose, const ScanPoints& scan
     const double w = p.beams;
     switch (e.state) {
       case EndState::kMatched:
-        total += w * matchMix(e.d2 * inv);
+        total += w * logMix(e.d2 * inv);
         break;
       case EndState::kContradict:
         total += w * contradict;
@@ -454,7 +452,7 @@ std::vector<ScanMatcher::Candidate> ScanMatcher::search(const Pose2& centre,
   const int nt = static_cast<int>(std::ceil(window_theta / step_theta));
   const int nxy = static_cast<int>(std::ceil(window_xy / step_xy));
   const double inv = 0.5 / (step_xy * step_xy);
-  const double contradict = matchMix(field_.cap2() * inv), unknown = 0.5 * contradict;
+  const double contradict = logMix(field_.cap2() * inv), unknown = 0.5 * contradict;
   std::vector<Candidate> out;
   out.reserve(static_cast<std::size_t>(2 * nt + 1) * (2 * nxy + 1) * (2 * nxy + 1));
   const std::size_t n = scan.points.size();
@@ -476,13 +474,32 @@ std::vector<ScanMatcher::Candidate> ScanMatcher::search(const Pose2& centre,
         for (std::size_t k = 0; k < n; ++k) {
           const EndPoint e = field_.query(wx[k] + dx, wy[k] + dy, ux[k], uy[k]);
           total += e.state == EndState::kMatched
-                       ? matchMix(e.d2 * inv)
+                       ? logMix(e.d2 * inv)
                        : (e.state == EndState::kUnknown ? unknown : contradict);
         }
         out.push_back({Pose2(centre.x + dx, centre.y + dy, theta), total});
       }
   }
   return out;
+}
+
+double ScanMatcher::margin(const std::vector<Candidate>& grid, const Candidate& top,
+                           const Information& info, double step_xy, double step_theta) {
+  double runner_up = -std::numeric_limits<double>::infinity();
+  for (const auto& c : grid) {
+    const double d[3] = {c.pose.x - top.pose.x, c.pose.y - top.pose.y,
+                         normalizeAngle(c.pose.theta - top.pose.theta)};
+    // The grid's own spacing blurs the peak: distances are counted beyond one step.
+    const double shrink[3] = {std::max(0.0, std::fabs(d[0]) - step_xy) * (d[0] < 0 ? -1 : 1),
+                              std::max(0.0, std::fabs(d[1]) - step_xy) * (d[1] < 0 ? -1 : 1),
+                              std::max(0.0, std::fabs(d[2]) - step_theta) * (d[2] < 0 ? -1 : 1)};
+    double m2 = 0.0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) m2 += shrink[i] * info.m[i][j] * shrink[j];
+    if (m2 <= 9.0) continue;
+    runner_up = std::max(runner_up, c.value);
+  }
+  return top.value - runner_up;
 }
 
 double ScanMatcher::match(const GridMap& map, const Pose2& start, const ScanPoints& scan,
@@ -501,8 +518,10 @@ void registerScan(GridMap* map, const Pose2& pose, const LaserGeometry& laser,
     bool hit = true;
     double d = r;
     if (std::isinf(r)) {
-      hit = false;  // no return: the whole usable range is free
-      d = max_urange;
+      // No return: free as far as the laser reaches and the usable range allows (maxUrange
+      // may be set beyond maxRange, gmapping's default of 80 m for an 8 m sensor).
+      hit = false;
+      d = std::min(max_urange, max_range);
     } else if (r > max_range) {
       continue;
     } else if (r > max_urange) {

@@ -106,6 +106,15 @@ class ScanMatcher {
   std::vector<Candidate> search(const Pose2& centre, const ScanPoints& scan, double window_xy,
                                 double window_theta, double step_xy, double step_theta) const;
 
+  // How far `top`, the best of a search's `grid`, leads the best candidate outside its own
+  // uncertainty (three standard deviations of `info`, the match's information, counted beyond
+  // one grid step): the length of a corridor, where any place fits as well, is not a rival.
+  // +infinity when nothing lies outside. A lead below log(grid.size()) nats is what comparing
+  // that many places produces by chance: the match is ambiguous (a pillar seen from any side,
+  // one rack among a row of equal racks).
+  static double margin(const std::vector<Candidate>& grid, const Candidate& top,
+                       const Information& info, double step_xy, double step_theta);
+
   // Convenience: prepare + optimize against `map`.
   double match(const GridMap& map, const Pose2& start, const ScanPoints& scan, Pose2* best,
                const OdometryPrior& prior = {});
