@@ -10,7 +10,7 @@ namespace {
 // A cell is on a wall when its occupied neighbours' means lie along a line: the smaller
 // spread is at most this share of the larger.
 constexpr double kLineRatio = 0.1;
-constexpr int kNormalWindow = 2;  // neighbours within this many cells shape the normal
+constexpr int kNormalWindow = 3;  // neighbours within this many cells shape the normal
 constexpr int kMinNeighbours = 3;
 }  // namespace
 
@@ -42,9 +42,10 @@ void MatchField::build(const GridMap& map, const std::vector<Point>& focus, doub
   bw_ = w_ >> kBlockBits;
   bh_ = h_ >> kBlockBits;
   nearest_.assign(static_cast<std::size_t>(w_) * h_, -1);
+  state_.assign(static_cast<std::size_t>(w_) * h_, kUnseen);
   markBlocks(focus, reach_cells);
   gatherSeeds(map, fullness);
-  estimateNormals();
+  estimateNormals(res);
   propagate(res);
 }
 
@@ -82,12 +83,17 @@ void MatchField::gatherSeeds(const GridMap& map, double fullness) {
       for (int cy = cy0; cy < cy0 + kBlock; ++cy) {
         for (int cx = cx0; cx < cx0 + kBlock; ++cx) {
           const Cell& c = cells[(cy - py * n_patch) * n_patch + (cx - px * n_patch)];
-          if (!c.hits || c.occupancy() <= fullness) continue;
+          if (!c.visits) continue;
           const std::size_t k = static_cast<std::size_t>(cy - y0_) * w_ + (cx - x0_);
+          if (!c.hits || c.occupancy() <= fullness) {
+            state_[k] = kFree;
+            continue;
+          }
+          state_[k] = kOccupied;
           nearest_[k] = static_cast<int32_t>(seeds_.size());
           seeds_.push_back({static_cast<float>((cx + 0.5) * res + c.sum_dx / c.hits),
                             static_cast<float>((cy + 0.5) * res + c.sum_dy / c.hits), 0.0f,
-                            0.0f});
+                            0.0f, false});
           queue_.push_back(static_cast<int32_t>(k));
         }
       }
@@ -127,7 +133,7 @@ void MatchField::propagate(double res) {
   }
 }
 
-void MatchField::estimateNormals() {
+void MatchField::estimateNormals(double res) {
   // Before the brushfire, nearest_ marks exactly the seed cells.
   for (const int32_t k : queue_) {
     const int i = k % w_, j = k / w_;
@@ -160,6 +166,19 @@ void MatchField::estimateNormals() {
     FieldSeed& s = seeds_[static_cast<std::size_t>(nearest_[static_cast<std::size_t>(k)])];
     s.nx = static_cast<float>(-std::sin(along));
     s.ny = static_cast<float>(std::cos(along));
+    // Which side has the map seen? Cells one and two cells off the wall on either side.
+    int free_plus = 0, free_minus = 0;
+    for (const double t : {1.5 * res, 2.5 * res}) {
+      free_plus += stateAt(s.mx + t * s.nx, s.my + t * s.ny) == kFree;
+      free_minus += stateAt(s.mx - t * s.nx, s.my - t * s.ny) == kFree;
+    }
+    if ((free_plus > 0) != (free_minus > 0)) {
+      s.sided = true;
+      if (free_minus > 0) {
+        s.nx = -s.nx;
+        s.ny = -s.ny;
+      }
+    }
   }
 }
 

@@ -37,6 +37,7 @@ const std::vector<ParamEntry>& paramTable() {
       entry("xmax", &SlamParams::xmax),
       entry("ymax", &SlamParams::ymax),
       entry("seed", &SlamParams::seed),  // not gmapping's: makes runs reproducible
+      entry("loop_closure", &SlamParams::loop_closure),  // not gmapping's: the back end
       matcher("sigma", &MatcherParams::sigma),
       matcher("kernelSize", &MatcherParams::kernel_size),
       matcher("lstep", &MatcherParams::lstep),

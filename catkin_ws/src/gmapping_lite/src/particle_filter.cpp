@@ -6,19 +6,21 @@
 
 namespace gmapping_lite {
 
+
 namespace {
-// What the motion model's spread leaves out (slip, timing, the map's own error). Tuned on
-// exploration runs in the simulator's office world (Turtlebot odometry, 58-degree fake laser)
-// and the synthetic office tour: wider floors let weak views (a far, noisy wall seen through a
-// door) turn the pose; narrower ones hold it to odometry's scale error.
-constexpr double kPriorFloorXY = 0.08;     // m
-constexpr double kPriorFloorTheta = 0.03;  // rad
+MatcherParams withMapResolution(MatcherParams m, double delta) {
+  // Beams ending within one map cell of each other are one observation to the map.
+  if (m.merge_distance <= 0.0) m.merge_distance = delta;
+  return m;
+}
 }  // namespace
 
 ParticleFilter::ParticleFilter(const SlamParams& params)
     : params_(params),
       motion_(params.motion),
-      matcher_(params.matcher),
+      matcher_(withMapResolution(params.matcher, params.delta)),
+      local_matcher_(withMapResolution(params.matcher, params.delta)),
+      loop_closer_(withMapResolution(params.matcher, params.delta), params.delta),
       rng_(params.seed) {
   particles_.resize(static_cast<std::size_t>(std::max(1, params.particles)));
   for (auto& p : particles_) p.map = GridMap(params.delta);
@@ -82,6 +84,162 @@ void ParticleFilter::resample(const std::vector<double>& weights) {
   particles_ = std::move(next);
 }
 
+OdometryPrior ParticleFilter::odometryPrior(const Pose2& inc) const {
+  // How far a match may move a particle from odometry's prediction (standard deviations):
+  // - the motion model's spread for this increment (srr, srt, str, stt as gmapping uses them);
+  // - timing: a scan stamped up to one scan period off its odometry (a laser's acquisition
+  //   time, a driver's stamping, a simulator's step) is placed off by the distance and angle
+  //   the robot covers in that period; a constant offset cancels between the two ends of the
+  //   increment while the speeds hold, so it counts as far as they changed (starting or
+  //   stopping a turn on the spot).
+  // Nothing else: the map's own resolution limits the scan, not odometry, and is in the scan's
+  // likelihood (sigma); a floor here would let a scan move a pose odometry knows well.
+  const double dist = std::hypot(inc.x, inc.y), turn = std::fabs(inc.theta);
+  const double period = scan_period_ > 0.0 ? scan_period_ : 0.0;
+  const MotionNoise& m = params_.motion;
+  return {m.srr * dist + m.str * turn + period * std::fabs(speed_ - last_update_speed_),
+          m.stt * turn + m.srt * dist + period * std::fabs(turn_rate_ - last_update_turn_rate_)};
+}
+
+double ParticleFilter::rescue(const GridMap& map, const Pose2& predicted, const ScanPoints& points,
+                              const OdometryPrior& prior, double score, Pose2* corrected) {
+  // The climb found nothing worth keeping although the scan could match: odometry may be off
+  // by more than a climb reaches (a wheel slip, a late stamp while turning). Search the
+  // prior's three-sigma window exhaustively on a grid of at most 21 steps per axis, no finer
+  // than two cells, then climb from the grid's best. The result must score as a match and most
+  // of the points the map can check must agree with it.
+  double far = params_.delta;
+  for (const auto& q : points.points) far = std::max(far, std::hypot(q.hx, q.hy));
+  const double window_xy = 3.0 * prior.sigma_xy, window_theta = std::min(M_PI, 3.0 * prior.sigma_theta);
+  const double step_xy = std::max(2.0 * params_.delta, window_xy / 10.0);
+  const double step_theta = std::max(step_xy / far, window_theta / 10.0);
+  matcher_.prepare(map, predicted, points, window_xy + window_theta * far);
+  const std::vector<ScanMatcher::Candidate> grid =
+      matcher_.search(predicted, points, window_xy, window_theta, step_xy, step_theta);
+  const ScanMatcher::Candidate* top = &grid.front();
+  for (const auto& c : grid)
+    if (c.value > top->value) top = &c;
+  Pose2 found;
+  const double found_score = matcher_.optimizeFrom(top->pose, predicted, points, &found, prior);
+  // At least a point per degree of freedom, and twice as many points agreeing with the map as
+  // contradicting it.
+  int matched = 0, contradicting = 0;
+  matcher_.agreement(found, points, &matched, &contradicting);
+  if (found_score <= score || matched < 3 || matched < 2 * contradicting) return score;
+  // The window must hold one place that fits, not several (a pillar fits from any side): the
+  // same test as a loop closure's, against the scan's own information at the found pose.
+  if (ScanMatcher::margin(grid, *top, matcher_.information(found, points, {}), step_xy,
+                          step_theta) < std::log(double(grid.size())))
+    return score;
+  *corrected = found;
+  return found_score;
+}
+
+std::shared_ptr<const LaserGeometry> ParticleFilter::sharedLaser(const LaserGeometry& laser) {
+  auto same = [&](const LaserGeometry& a) {
+    if (a.beams.size() != laser.beams.size() || a.origin.x != laser.origin.x ||
+        a.origin.y != laser.origin.y)
+      return false;
+    for (std::size_t i = 0; i < a.beams.size(); ++i)
+      if (a.beams[i].angle != laser.beams[i].angle || a.beams[i].scale != laser.beams[i].scale)
+        return false;
+    return true;
+  };
+  if (!laser_ || !same(*laser_)) laser_ = std::make_shared<const LaserGeometry>(laser);
+  return laser_;
+}
+
+void ParticleFilter::backEnd(const ScanPoints& points, const OdometryPrior& prior,
+                             UpdateReport* report) {
+  Particle& best = particles_[bestIndex()];
+  std::vector<const TrajectoryNode*> chain = chainOf(best.trajectory.get());
+  if (chain.size() < 2) return;
+  // The step to the newest node as its scan matches the recent scans alone: the front end
+  // matched it against the whole map, and on returning to a place mapped long ago that match
+  // carries the drift accumulated since (a jump the graph must be free to spread out).
+  std::vector<double> var_xy, var_theta;
+  relativeUncertainty(std::vector<const TrajectoryNode*>(chain.begin(), chain.end() - 1), loops_,
+                      &var_xy, &var_theta);
+  const TrajectoryNode& newest = *chain.back();
+  const TrajectoryNode& previous = *chain[chain.size() - 2];
+  GridMap local(params_.delta);
+  const double half_cell = 0.5 * params_.delta;
+  double mean_range = 0.0;
+  for (const auto& q : points.points) mean_range += std::hypot(q.hx, q.hy);
+  mean_range = points.points.empty() ? 0.0 : mean_range / double(points.points.size());
+  int recent = 0;
+  const int most = 2 * static_cast<int>(std::ceil(
+                           std::min(params_.matcher.max_range, params_.matcher.max_urange)));
+  for (int k = static_cast<int>(chain.size()) - 2; k >= 0 && recent < most; --k) {
+    const double loose = std::sqrt(var_xy[k]) + std::sqrt(var_theta[k]) * mean_range;
+    if (loose >= half_cell && recent > 0) break;
+    const TrajectoryNode& n = *chain[static_cast<std::size_t>(k)];
+    registerScan(&local, n.pose, *n.laser, *n.ranges, params_.matcher.max_range,
+                 params_.matcher.max_urange);
+    ++recent;
+  }
+  Pose2 local_pose = newest.pose;
+  Information info = best.information;
+  if (points.points.size() >= 3) {
+    local_matcher_.prepare(local, newest.pose, points);
+    Pose2 predicted = previous.pose * newest.step;  // where the front end put it
+    const double score =
+        local_matcher_.optimizeFrom(predicted, predicted, points, &local_pose, prior);
+    if (score > params_.minimum_score) {
+      info = local_matcher_.information(local_pose, points, prior);
+    } else {
+      local_pose = predicted;
+    }
+  }
+  auto node = std::make_shared<TrajectoryNode>(newest);
+  node->step = local_pose.relativeTo(previous.pose);
+  node->information = info.rotated(previous.pose.theta);
+  best.trajectory = node;
+  chain.back() = node.get();
+
+  PoseEdge edge;
+  const bool found = loop_closer_.find(chain, loops_, &edge, &report->loop);
+  if (!found) return;
+  loops_.push_back(edge);
+  closeLoop(chain, report);
+}
+
+void ParticleFilter::closeLoop(const std::vector<const TrajectoryNode*>& chain,
+                               UpdateReport* report) {
+  PoseGraph graph;
+  for (const TrajectoryNode* n : chain) graph.addNode(n->pose);
+  for (std::size_t k = 1; k < chain.size(); ++k)
+    graph.addEdge({static_cast<int>(k) - 1, static_cast<int>(k), chain[k]->step,
+                   chain[k]->information});
+  for (const PoseEdge& e : loops_)
+    if (e.to < graph.size()) graph.addEdge(e);
+  graph.optimize(10);
+  double moved = 0.0;
+  for (std::size_t k = 0; k < chain.size(); ++k)
+    moved = std::max(moved, std::hypot(graph.pose(int(k)).x - chain[k]->pose.x,
+                                       graph.pose(int(k)).y - chain[k]->pose.y));
+  // Less than half a cell everywhere: the map would not change.
+  if (moved < 0.5 * params_.delta) return;
+  std::shared_ptr<const TrajectoryNode> last;
+  GridMap map(params_.delta);
+  for (std::size_t k = 0; k < chain.size(); ++k) {
+    auto node = std::make_shared<TrajectoryNode>(*chain[k]);
+    node->pose = graph.pose(static_cast<int>(k));
+    node->parent = last;
+    registerScan(&map, node->pose, *node->laser, *node->ranges, params_.matcher.max_range,
+                 params_.matcher.max_urange);
+    last = node;
+  }
+  for (auto& p : particles_) {
+    p.pose = last->pose;
+    p.map = map;
+    p.trajectory = last;
+    p.log_weight = p.weight_sum = 0.0;
+    p.drift_xy2 = p.drift_theta2 = 0.0;
+  }
+  report->map_rebuilt = true;
+}
+
 UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const LaserGeometry& laser,
                                      const Ranges& ranges) {
   UpdateReport report;
@@ -91,7 +249,12 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
     GridMap first(params_.delta);
     registerScan(&first, odom, laser, ranges, params_.matcher.max_range,
                  params_.matcher.max_urange);
-    const auto root = std::make_shared<TrajectoryNode>(TrajectoryNode{odom, stamp, nullptr});
+    auto root_node = std::make_shared<TrajectoryNode>();
+    root_node->pose = odom;
+    root_node->stamp = stamp;
+    root_node->laser = sharedLaser(laser);
+    root_node->ranges = std::make_shared<const Ranges>(ranges);
+    const std::shared_ptr<const TrajectoryNode> root = root_node;
     for (auto& p : particles_) {
       p.pose = odom;
       p.map = first;
@@ -99,6 +262,7 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
     }
     initialized_ = true;
     last_odom_ = previous_odom_ = odom;
+    previous_stamp_ = stamp;
     last_update_stamp_ = stamp;
     report.processed = true;
     report.update_index = updates_++;
@@ -111,6 +275,14 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
   linear_distance_ += std::hypot(step.x, step.y);
   angular_distance_ += std::fabs(step.theta);
   previous_odom_ = odom;
+  // The robot's speed at this scan, and the scan period, from the scans seen.
+  const double dt = stamp - previous_stamp_;
+  previous_stamp_ = stamp;
+  if (dt > 0.0) {
+    scan_period_ = scan_period_ > 0.0 ? 0.9 * scan_period_ + 0.1 * dt : dt;
+    speed_ = step.x / dt;
+    turn_rate_ = step.theta / dt;
+  }
   const bool due = linear_distance_ >= params_.linear_update ||
                    angular_distance_ >= params_.angular_update ||
                    (params_.temporal_update >= 0.0 &&
@@ -118,24 +290,53 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
   if (!due) return report;
 
   const ScanPoints points = matcher_.matchPoints(laser, ranges);
-  // The match may move a particle about as far as odometry could plausibly be off: the
-  // motion model's spread for this increment, plus a floor for what it does not model.
   const Pose2 inc = odom.relativeTo(last_odom_);
-  const double dist = std::hypot(inc.x, inc.y), turn = std::fabs(inc.theta);
-  const OdometryPrior prior{
-      kPriorFloorXY + params_.motion.srr * dist + params_.motion.str * turn,
-      kPriorFloorTheta + params_.motion.stt * turn + params_.motion.srt * dist};
+  const OdometryPrior increment_prior = odometryPrior(inc);
   double best_score = -1.0;
+  double mean_range = 0.0;
+  for (const auto& q : points.points) mean_range += q.beams * std::hypot(q.hx, q.hy);
+  mean_range = points.beams > 0.0 ? mean_range / points.beams : 0.0;
   for (auto& p : particles_) {
-    p.pose = motion_.sample(p.pose, last_odom_, odom, rng_);
-    matcher_.prepare(p.map, p.pose, points);
+    // The prior: this increment's spread plus what odometry may have drifted since a scan
+    // last placed the particle (variances add).
+    const Pose2 predicted = p.pose * inc;
+    const OdometryPrior prior{std::sqrt(increment_prior.sigma_xy * increment_prior.sigma_xy +
+                                        p.drift_xy2),
+                              std::sqrt(increment_prior.sigma_theta *
+                                            increment_prior.sigma_theta +
+                                        p.drift_theta2)};
+    // gmapping's proposal: the match climbs from a sample of the motion model.
+    const Pose2 sample = motion_.sample(p.pose, last_odom_, odom, rng_);
+    matcher_.prepare(p.map, sample, points);
     Pose2 corrected;
-    const double score = matcher_.optimize(p.pose, points, &corrected, prior);
+    double score = matcher_.optimizeFrom(sample, predicted, points, &corrected, prior);
+    if (score <= params_.minimum_score && points.beams > params_.minimum_score &&
+        points.points.size() >= 3)
+      score = rescue(p.map, predicted, points, prior, score, &corrected);
     if (score > params_.minimum_score) {
       p.pose = corrected;
+      p.drift_xy2 = p.drift_theta2 = 0.0;
+      p.placed = true;
     } else {
+      // No usable match: odometry's prediction, not a random sample of its spread (nothing
+      // would tell the samples apart), and the spread is carried to the next match.
       ++report.failed_matches;
+      p.pose = predicted;
+      p.drift_xy2 = prior.sigma_xy * prior.sigma_xy;
+      p.drift_theta2 = prior.sigma_theta * prior.sigma_theta;
+      // Its scan is drawn if the pose is known to a cell at the scan's typical range, or if
+      // most of the scan ends in space the map has never seen: a scan into new territory (open
+      // floor, a new aisle) extends the map at odometry's pose, the best there is; not drawing
+      // it would leave nothing to match the next scans against (in open space no match would
+      // ever succeed again) while the drift only grows. A scan that mostly overlaps the map
+      // would blur it at an uncertain pose and is left out.
+      int matched = 0, contradicting = 0;
+      matcher_.prepare(p.map, predicted, points);
+      matcher_.agreement(predicted, points, &matched, &contradicting);
+      p.placed = prior.sigma_xy + prior.sigma_theta * mean_range <= params_.delta ||
+                 2 * (matched + contradicting) <= static_cast<int>(points.points.size());
     }
+    p.information = matcher_.information(p.pose, points, prior);
     double sc = 0.0;
     const double l = matcher_.likelihood(p.pose, points, &sc);
     p.log_weight += l;
@@ -151,13 +352,28 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
     resample(w);
     report.resampled = true;
   }
+  const std::shared_ptr<const LaserGeometry> shared_laser = sharedLaser(laser);
+  const auto shared_ranges = std::make_shared<const Ranges>(ranges);
   for (auto& p : particles_) {
-    registerScan(&p.map, p.pose, laser, ranges, params_.matcher.max_range,
-                 params_.matcher.max_urange);
-    p.trajectory = std::make_shared<TrajectoryNode>(TrajectoryNode{p.pose, stamp, p.trajectory});
+    if (p.placed)
+      registerScan(&p.map, p.pose, laser, ranges, params_.matcher.max_range,
+                   params_.matcher.max_urange);
+    auto node = std::make_shared<TrajectoryNode>();
+    node->pose = p.pose;
+    node->stamp = stamp;
+    node->parent = p.trajectory;
+    node->index = p.trajectory->index + 1;
+    node->laser = shared_laser;
+    node->ranges = shared_ranges;
+    node->step = p.pose.relativeTo(p.trajectory->pose);
+    node->information = p.information.rotated(p.trajectory->pose.theta);
+    p.trajectory = node;
   }
+  if (params_.loop_closure) backEnd(points, increment_prior, &report);
 
   last_odom_ = odom;
+  last_update_speed_ = speed_;
+  last_update_turn_rate_ = turn_rate_;
   linear_distance_ = angular_distance_ = 0.0;
   last_update_stamp_ = stamp;
   report.processed = true;

@@ -7,6 +7,8 @@
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 
+#include <sys/resource.h>
+
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -134,7 +136,7 @@ int main(int argc, char** argv) {
   }
   std::unique_ptr<ParticleFilter> filter;
   std::map<std::string, std::pair<std::size_t, LaserGeometry>> lasers;
-  int scans = 0, dropped = 0;
+  int scans = 0, dropped = 0, loop_attempts = 0, loops = 0, rebuilds = 0;
   double first_stamp = -1, last_stamp = 0;
   for (const rosbag::MessageInstance& m : scan_view) {
     const auto scan = m.instantiate<sensor_msgs::LaserScan>();
@@ -183,8 +185,11 @@ int main(int argc, char** argv) {
     const double stamp = scan->header.stamp.toSec();
     if (first_stamp < 0) first_stamp = stamp;
     last_stamp = stamp;
-    filter->addScan(odom, stamp, it->second.second,
-                    toRanges(scan->ranges, scan->range_min, scan->range_max));
+    const UpdateReport r = filter->addScan(odom, stamp, it->second.second,
+                                           toRanges(scan->ranges, scan->range_min, scan->range_max));
+    loop_attempts += r.loop.tried;
+    loops += r.loop.accepted;
+    rebuilds += r.map_rebuilt;
   }
   if (!filter) {
     std::fprintf(stderr, "slam_offline: no scan could be placed (%d scans, %d without odometry)\n",
@@ -217,9 +222,15 @@ int main(int argc, char** argv) {
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   const double duration = last_stamp - first_stamp;
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const double cpu = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                     1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
   std::printf("slam_offline: %d scans (%d without odometry), %d updates, %zu tf messages; "
-              "%.1f s of data in %.2f s (%.1fx real time); map %dx%d written to %s.pgm/.yaml\n",
+              "%.1f s of data in %.2f s (%.1fx real time, cpu %.2f s); map %dx%d written to "
+              "%s.pgm/.yaml; loop closures %d of %d tried (%d redrew the map)\n",
               scans, dropped, filter->updates(), tf_count, duration, wall,
-              wall > 0 ? duration / wall : 0.0, occ.width, occ.height, o.out.c_str());
+              wall > 0 ? duration / wall : 0.0, cpu, occ.width, occ.height, o.out.c_str(), loops,
+              loop_attempts, rebuilds);
   return 0;
 }

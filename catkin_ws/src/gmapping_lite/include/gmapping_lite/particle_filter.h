@@ -8,18 +8,14 @@
 
 #include "gmapping_lite/grid_map.h"
 #include "gmapping_lite/laser.h"
+#include "gmapping_lite/loop_closure.h"
 #include "gmapping_lite/motion_model.h"
 #include "gmapping_lite/pose2.h"
 #include "gmapping_lite/scan_matcher.h"
 #include "gmapping_lite/slam_params.h"
+#include "gmapping_lite/trajectory.h"
 
 namespace gmapping_lite {
-
-struct TrajectoryNode {
-  Pose2 pose;
-  double stamp = 0.0;
-  std::shared_ptr<const TrajectoryNode> parent;
-};
 
 struct Particle {
   Pose2 pose;
@@ -27,6 +23,11 @@ struct Particle {
   double weight_sum = 0.0;  // over the whole run: picks the best particle
   GridMap map;
   std::shared_ptr<const TrajectoryNode> trajectory;
+  // Odometry's variance accumulated since a scan last placed this particle (m^2, rad^2): a
+  // match may correct that much on top of the current increment's spread.
+  double drift_xy2 = 0.0, drift_theta2 = 0.0;
+  Information information;  // of the pose the last match gave (world frame)
+  bool placed = true;       // the last scan's pose was known well enough to draw it
 };
 
 // What one processed scan did, for diagnostics.
@@ -38,6 +39,8 @@ struct UpdateReport {
   double best_score = 0.0;
   int failed_matches = 0;  // particles whose match scored below minimumScore
   Pose2 best_pose;
+  LoopClosureReport loop;       // the back end's attempt at this update
+  bool map_rebuilt = false;     // a loop closure moved the trajectory and the map was redrawn
 };
 
 class ParticleFilter {
@@ -66,10 +69,26 @@ class ParticleFilter {
 
  private:
   void resample(const std::vector<double>& weights);
+  // The odometry prior of a match for the odometry increment `inc`.
+  OdometryPrior odometryPrior(const Pose2& inc) const;
+  // Back end, on the best particle after an update: the step to its newest node measured
+  // against its recent scans only, then a loop closure attempt; on success the trajectory is
+  // optimised, the map redrawn from it and every particle continues from the result.
+  void backEnd(const ScanPoints& points, const OdometryPrior& prior, UpdateReport* report);
+  void closeLoop(const std::vector<const TrajectoryNode*>& chain, UpdateReport* report);
+  std::shared_ptr<const LaserGeometry> sharedLaser(const LaserGeometry& laser);
+  // A wide search when the climb from the sample found no match; returns the better score
+  // and writes the pose when it found one.
+  double rescue(const GridMap& map, const Pose2& predicted, const ScanPoints& points,
+                const OdometryPrior& prior, double score, Pose2* corrected);
 
   SlamParams params_;
   MotionModel motion_;
   ScanMatcher matcher_;
+  ScanMatcher local_matcher_;  // the back end's, against the recent scans
+  LoopCloser loop_closer_;
+  std::vector<PoseEdge> loops_;  // loop edges found so far (node indices)
+  std::shared_ptr<const LaserGeometry> laser_;  // the last laser geometry, shared by nodes
   std::mt19937 rng_;
   std::vector<Particle> particles_;
   bool initialized_ = false;
@@ -78,6 +97,10 @@ class ParticleFilter {
   Pose2 previous_odom_;     // odometry at the last scan seen (for distance accumulation)
   double linear_distance_ = 0.0, angular_distance_ = 0.0;
   double last_update_stamp_ = 0.0;
+  double previous_stamp_ = 0.0;  // stamp of the last scan seen
+  double scan_period_ = 0.0;     // running mean of the interval between scans (s)
+  double speed_ = 0.0, turn_rate_ = 0.0;  // odometry's forward and turn rate at the last scan
+  double last_update_speed_ = 0.0, last_update_turn_rate_ = 0.0;  // at the last update
 };
 
 }  // namespace gmapping_lite
