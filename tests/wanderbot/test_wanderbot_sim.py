@@ -41,10 +41,13 @@ def truth_at(truth, t):
     return min(truth, key=lambda s: abs(s[0] - t))
 
 
-def test_red_light_green_light_alternates_3_s_and_the_robot_follows(ros):
-    # The clock waits for a driver that lags (a loaded machine): each 3 s phase then drives
-    # the base for 3 sim s, not for what is left of it when the command comes.
-    start_sim(ros, world="playground", speed=SIM_SPEED, seed=1, wait_for_commands=0.3)
+def test_red_light_green_light_alternates_3_s_and_the_robot_follows(ros, tmp_path):
+    # A 30 m hall: however long a loaded machine lets the run go on past 14 sim s, the robot
+    # (1.5 m per green phase) meets no wall. (In the playground a slow run reached one, and
+    # the bumper cut a green phase short.) The clock waits for a driver that lags, so each
+    # 3 s phase drives the base for 3 sim s, not for what is left of it when the command comes.
+    hall, _ = write_room(tmp_path, width=30.0, height=4.0, start=(1.0, 2.0, 0.0))
+    start_sim(ros, world=str(hall), speed=SIM_SPEED, seed=1, wait_for_commands=0.3)
     ros.start(["rosrun", "wanderbot", "red_light_green_light.py", f"cmd_vel:={CMD}"])
     ros.wait_for_topic(CMD)
     probe = ros.probe([CMD, TRUTH], duration=600, timeout=600)
