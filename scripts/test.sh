@@ -9,5 +9,7 @@ source "$here/catkin_ws/devel/setup.bash"
 cd "$here"
 shopt -s nullglob
 unit_dirs=(catkin_ws/src/*/test)
-workers=${ROSBOOK_TEST_WORKERS:-2}
+# Three workers on two cores: most of a test is waiting (process start-up, roscore, sim
+# time), and the tests do not depend on load (sim time, held clocks).
+workers=${ROSBOOK_TEST_WORKERS:-3}
 exec /usr/bin/python3 -m pytest -n "$workers" tests "${unit_dirs[@]}" "$@"
