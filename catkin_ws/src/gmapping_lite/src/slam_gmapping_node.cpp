@@ -7,10 +7,12 @@
 #include <ros/ros.h>
 
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <thread>
 
@@ -54,7 +56,16 @@ class SlamGmappingNode {
     }
     max_range_set_ = private_.hasParam("maxRange");
     max_urange_set_ = private_.hasParam("maxUrange");
-    if (throttle_scans_ < 1) throttle_scans_ = 1;
+    std::string problem = paramProblem(params_, max_range_set_, max_urange_set_);
+    if (problem.empty() && throttle_scans_ < 1) problem = "throttle_scans must be 1 or more";
+    if (problem.empty() && !(map_update_interval_ > 0.0 && std::isfinite(map_update_interval_)))
+      problem = "map_update_interval must be a number of seconds above 0";
+    if (!problem.empty()) {
+      const std::string line = "slam_gmapping: ~" + problem +
+                               " (set it with rosparam set /slam_gmapping/NAME VALUE, or _NAME:=VALUE)";
+      ROS_FATAL("%s", line.c_str());
+      throw std::invalid_argument(line);
+    }
 
     map_pub_ = node_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
     metadata_pub_ = node_.advertise<nav_msgs::MapMetaData>("map_metadata", 1, true);
@@ -316,7 +327,13 @@ int main(int argc, char** argv) {
   // Diagnostics appear line by line even when stdout is a file or a pipe.
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   ros::init(argc, argv, "slam_gmapping");
-  gmapping_lite::SlamGmappingNode node;
+  std::unique_ptr<gmapping_lite::SlamGmappingNode> node;
+  try {
+    node = std::make_unique<gmapping_lite::SlamGmappingNode>();
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 2;
+  }
   // Two threads: the service and the scan callback must not block each other for long.
   ros::AsyncSpinner spinner(2);
   spinner.start();

@@ -94,6 +94,7 @@ bool parse(int argc, char** argv, Options* o, std::string* error) {
     }
   }
   if (o->bag.empty()) *error = "no bag given";
+  if (error->empty()) *error = paramProblem(o->params, o->max_range_set, o->max_urange_set);
   return error->empty();
 }
 

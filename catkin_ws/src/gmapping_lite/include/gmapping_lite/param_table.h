@@ -23,6 +23,10 @@ const std::vector<ParamEntry>& paramTable();
 // Set one parameter by name; false if the name is unknown.
 bool setParam(SlamParams* params, const std::string& name, double value);
 
+// The first parameter the filter cannot work with, as "NAME is VALUE: it must be RULE"; empty
+// when all are usable. maxRange / maxUrange are checked only when set (see rangeDefaults).
+std::string paramProblem(const SlamParams& params, bool max_range_set, bool max_urange_set);
+
 // gmapping's defaults from a scan: maxRange = range_max - 0.01 (so "no return" readings at
 // range_max clear space), maxUrange = maxRange, each only if not set explicitly.
 void rangeDefaults(SlamParams* params, double range_max, bool max_range_set, bool max_urange_set);
