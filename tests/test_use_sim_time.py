@@ -67,5 +67,6 @@ def test_rate_loop_node_warns_on_sim_time_without_clock(ros, package, script, pu
     ros.wait_for_topic("cmd_vel")
     messages = ros.echo("cmd_vel", count=3)
     # The probe stamps a message with its own ROS time, 0 until its first /clock arrives.
-    assert len(messages) == 3 and all(m["ros"] in (0.0,) or m["ros"] >= 10.0 for m in messages)
+    assert len(messages) == 3, messages
+    assert all(m["ros"] == 0.0 or m["ros"] >= 10.0 for m in messages), messages
     assert node.poll() is None

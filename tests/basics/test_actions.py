@@ -1,12 +1,11 @@
 """Chapter 5, actions: the timer with the simple and the fancy server and client."""
 
-import json
 import re
 import subprocess
 from pathlib import Path
 
 import pytest
-from roskit import DEBIAN_PYTHON, free_port, ros_environment
+from roskit import DEBIAN_PYTHON, free_port, read_jsonl, ros_environment
 
 HERE = Path(__file__).resolve().parent
 ACTION_CLOCK = HERE / "action_clock.py"
@@ -49,9 +48,13 @@ def fancy_client(ros, clock, *args):
 
 def server_feedback(clock):
     """The server's feedback [(elapsed, remaining)] as the action clock recorded it."""
-    out = Path(clock.args[clock.args.index("--out") + 1])
-    records = [json.loads(line) for line in out.read_text().splitlines()]
+    records = read_jsonl(clock.args[clock.args.index("--out") + 1])
     return [(r["elapsed"], r["remaining"]) for r in records if r["topic"] == "/timer/feedback"]
+
+
+def as_printed(feedback):
+    """(elapsed, remaining) pairs to the client's printed precision."""
+    return [(round(e, 6), round(r, 6)) for e, r in feedback]
 
 
 def assert_client_printed_in_order(printed, sent):
@@ -59,8 +62,7 @@ def assert_client_printed_in_order(printed, sent):
     result comes on its own topic and may overtake them, and actionlib's client drops
     feedback for a goal that is already done."""
     assert printed, "the client printed no feedback"
-    rounded = [(round(e, 6), round(r, 6)) for e, r in sent]
-    assert [(round(e, 6), round(r, 6)) for e, r in printed] == rounded[: len(printed)]
+    assert as_printed(printed) == as_printed(sent)[: len(printed)]
 
 
 def assert_feedback_once_a_second(feedback, goal):
@@ -122,7 +124,7 @@ def test_timer_runs_on_sim_time(ros, master):
     feedback = server_feedback(clock)
     assert len(feedback) == 50
     assert_feedback_once_a_second(feedback, 50.0)
-    assert set(printed) <= {(round(e, 6), round(r, 6)) for e, r in feedback}
+    assert set(printed) <= set(as_printed(feedback))
 
 
 def test_simple_client_waits_for_the_server_then_gets_five_seconds(ros, master):

@@ -6,7 +6,6 @@ the error must name. One roscore serves every row; each row clears the simulator
 parameters first."""
 
 import pytest
-from roskit import RosGraph
 
 CASES = {
     "speed not a number": ({"speed": "abc"}, "speed"),
@@ -31,23 +30,14 @@ CASES = {
 }
 
 
-@pytest.fixture(scope="module")
-def graph(tmp_path_factory):
-    ros = RosGraph(tmp_path_factory.mktemp("simulator_params"))
-    try:
-        yield ros
-    finally:
-        ros.close()
-
-
 @pytest.mark.parametrize("case", sorted(CASES))
-def test_bad_simulator_parameter_is_refused_with_its_name(graph, case):
+def test_bad_simulator_parameter_is_refused_with_its_name(shared_ros, case):
     params, named = CASES[case]
     # rosrun's private parameters stay on the master: each row starts from none.
-    graph.master().deleteParam("/test_simulator_params", "/simulator")
+    shared_ros.master().deleteParam("/test_simulator_params", "/simulator")
     cmd = ["rosrun", "bullet_turtlebot", "simulator", "_world:=playground"]
     cmd += [f"_{name}:={value}" for name, value in params.items()]
-    done = graph.run(cmd, check=False, timeout=120)
+    done = shared_ros.run(cmd, check=False, timeout=120)
     output = done.stdout + done.stderr
     assert done.returncode == 2, output
     line = next(line for line in output.splitlines() if line.startswith("simulator: "))

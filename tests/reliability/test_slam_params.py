@@ -7,7 +7,7 @@ share one (each row clears the node's private parameters first)."""
 import subprocess
 
 import pytest
-from roskit import RosGraph, ros_environment
+from roskit import ros_environment
 
 CASES = {
     "particles 0": ("particles", "0"),
@@ -43,21 +43,12 @@ def test_slam_offline_refuses_a_bad_parameter_before_reading_the_bag(tmp_path, c
     assert first.startswith(f"slam_offline: {name} is ") and "it must be" in first, first
 
 
-@pytest.fixture(scope="module")
-def graph(tmp_path_factory):
-    ros = RosGraph(tmp_path_factory.mktemp("slam_params"))
-    try:
-        yield ros
-    finally:
-        ros.close()
-
-
 @pytest.mark.parametrize("case", NODE_CASES)
-def test_slam_gmapping_refuses_a_bad_parameter_at_start_up(graph, case):
+def test_slam_gmapping_refuses_a_bad_parameter_at_start_up(shared_ros, case):
     name, value = CASES[case]
-    graph.master().deleteParam("/test_slam_params", "/slam_gmapping")
+    shared_ros.master().deleteParam("/test_slam_params", "/slam_gmapping")
     cmd = ["rosrun", "gmapping_lite", "slam_gmapping", f"_{name}:={value}"]
-    done = graph.run(cmd, check=False, timeout=120)
+    done = shared_ros.run(cmd, check=False, timeout=120)
     assert done.returncode == 2, done.stdout + done.stderr
     line = next(x for x in done.stderr.splitlines() if x.startswith("slam_gmapping: ~"))
     assert f"~{name} is " in line and "it must be" in line and "_NAME:=VALUE" in line, line
