@@ -3,52 +3,62 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace gmapping_lite {
 
 namespace {
 template <typename T>
-ParamEntry entry(const std::string& name, T SlamParams::*field) {
+ParamEntry entry(const std::string& name, T SlamParams::*field, ParamBounds bounds = {}) {
   return {name, [field](const SlamParams& p) { return static_cast<double>(p.*field); },
-          [field](SlamParams* p, double v) { p->*field = static_cast<T>(v); }};
+          [field](SlamParams* p, double v) { p->*field = static_cast<T>(v); }, std::move(bounds)};
 }
 template <typename T>
-ParamEntry matcher(const std::string& name, T MatcherParams::*field) {
+ParamEntry matcher(const std::string& name, T MatcherParams::*field, ParamBounds bounds) {
   return {name, [field](const SlamParams& p) { return static_cast<double>(p.matcher.*field); },
-          [field](SlamParams* p, double v) { p->matcher.*field = static_cast<T>(v); }};
+          [field](SlamParams* p, double v) { p->matcher.*field = static_cast<T>(v); },
+          std::move(bounds)};
 }
 ParamEntry motion(const std::string& name, double MotionNoise::*field) {
   return {name, [field](const SlamParams& p) { return p.motion.*field; },
-          [field](SlamParams* p, double v) { p->motion.*field = v; }};
+          [field](SlamParams* p, double v) { p->motion.*field = v; },
+          {0, 10, false, "a noise factor in [0, 10]"}};
 }
 }  // namespace
 
+// Each bound says what the filter needs, not what a world suits: counts and sizes are capped
+// so memory stays bounded (particles each carry a map; see paramProblem for the map's size),
+// probabilities lie in (0, 1), step sizes and noise are finite.
 const std::vector<ParamEntry>& paramTable() {
   static const std::vector<ParamEntry> table = {
-      entry("particles", &SlamParams::particles),
-      entry("linearUpdate", &SlamParams::linear_update),
-      entry("angularUpdate", &SlamParams::angular_update),
-      entry("temporalUpdate", &SlamParams::temporal_update),
-      entry("resampleThreshold", &SlamParams::resample_threshold),
-      entry("minimumScore", &SlamParams::minimum_score),
-      entry("ogain", &SlamParams::ogain),
-      entry("delta", &SlamParams::delta),
-      entry("occ_thresh", &SlamParams::occ_thresh),
-      entry("xmin", &SlamParams::xmin),
-      entry("ymin", &SlamParams::ymin),
-      entry("xmax", &SlamParams::xmax),
-      entry("ymax", &SlamParams::ymax),
+      entry("particles", &SlamParams::particles,
+            {1, 1000, false, "a count in [1, 1000] (each particle holds a map)"}),
+      entry("linearUpdate", &SlamParams::linear_update, {0, 1e6, false, "metres >= 0"}),
+      entry("angularUpdate", &SlamParams::angular_update, {0, 1e6, false, "radians >= 0"}),
+      entry("temporalUpdate", &SlamParams::temporal_update,
+            {-1e6, 1e6, false, "seconds (< 0 turns it off)"}),
+      entry("resampleThreshold", &SlamParams::resample_threshold,
+            {0, 1, true, "a fraction in (0, 1]"}),
+      entry("minimumScore", &SlamParams::minimum_score, {0, 1e9, false, "a score >= 0"}),
+      entry("ogain", &SlamParams::ogain, {0, 1e6, true, "a gain > 0"}),
+      entry("delta", &SlamParams::delta, {0.001, 10, false, "a cell size in [0.001, 10] m"}),
+      entry("occ_thresh", &SlamParams::occ_thresh,
+            {0, std::nextafter(1.0, 0.0), true, "a probability in (0, 1)"}),
+      entry("xmin", &SlamParams::xmin, {-1e6, 1e6, false, "metres"}),
+      entry("ymin", &SlamParams::ymin, {-1e6, 1e6, false, "metres"}),
+      entry("xmax", &SlamParams::xmax, {-1e6, 1e6, false, "metres"}),
+      entry("ymax", &SlamParams::ymax, {-1e6, 1e6, false, "metres"}),
       entry("seed", &SlamParams::seed),  // not gmapping's: makes runs reproducible
       entry("loop_closure", &SlamParams::loop_closure),  // not gmapping's: the back end
-      matcher("sigma", &MatcherParams::sigma),
-      matcher("kernelSize", &MatcherParams::kernel_size),
-      matcher("lstep", &MatcherParams::lstep),
-      matcher("astep", &MatcherParams::astep),
-      matcher("iterations", &MatcherParams::iterations),
-      matcher("lsigma", &MatcherParams::lsigma),
-      matcher("lskip", &MatcherParams::lskip),
-      matcher("maxRange", &MatcherParams::max_range),
-      matcher("maxUrange", &MatcherParams::max_urange),
+      matcher("sigma", &MatcherParams::sigma, {0, 1e3, true, "metres > 0"}),
+      matcher("kernelSize", &MatcherParams::kernel_size, {0, 10, false, "cells in [0, 10]"}),
+      matcher("lstep", &MatcherParams::lstep, {0, 10, true, "metres in (0, 10]"}),
+      matcher("astep", &MatcherParams::astep, {0, 3.2, true, "radians in (0, pi]"}),
+      matcher("iterations", &MatcherParams::iterations, {0, 100, false, "a count in [0, 100]"}),
+      matcher("lsigma", &MatcherParams::lsigma, {0, 1e3, true, "a value > 0"}),
+      matcher("lskip", &MatcherParams::lskip, {0, 1e4, false, "a count >= 0"}),
+      matcher("maxRange", &MatcherParams::max_range, {0, 1e4, true, "metres in (0, 10000]"}),
+      matcher("maxUrange", &MatcherParams::max_urange, {0, 1e4, true, "metres in (0, 10000]"}),
       motion("srr", &MotionNoise::srr),
       motion("srt", &MotionNoise::srt),
       motion("str", &MotionNoise::str),
@@ -67,44 +77,7 @@ bool setParam(SlamParams* params, const std::string& name, double value) {
 }
 
 namespace {
-struct Rule {
-  const char* name;
-  double lo, hi;
-  bool lo_open;  // lo itself not allowed
-  const char* text;
-};
-
-// Each bound says what the filter needs, not what a world suits: counts and sizes are
-// capped so memory stays bounded (particles each carry a map; a side of 20 000 cells at
-// 0.05 m is 1 km), probabilities lie in (0, 1), step sizes and noise are finite.
-const Rule kRules[] = {
-    {"particles", 1, 1000, false, "a count in [1, 1000] (each particle holds a map)"},
-    {"linearUpdate", 0, 1e6, false, "metres >= 0"},
-    {"angularUpdate", 0, 1e6, false, "radians >= 0"},
-    {"temporalUpdate", -1e6, 1e6, false, "seconds (< 0 turns it off)"},
-    {"resampleThreshold", 0, 1, true, "a fraction in (0, 1]"},
-    {"minimumScore", 0, 1e9, false, "a score >= 0"},
-    {"ogain", 0, 1e6, true, "a gain > 0"},
-    {"delta", 0.001, 10, false, "a cell size in [0.001, 10] m"},
-    {"occ_thresh", 0, std::nextafter(1.0, 0.0), true, "a probability in (0, 1)"},
-    {"xmin", -1e6, 1e6, false, "metres"},
-    {"ymin", -1e6, 1e6, false, "metres"},
-    {"xmax", -1e6, 1e6, false, "metres"},
-    {"ymax", -1e6, 1e6, false, "metres"},
-    {"sigma", 0, 1e3, true, "metres > 0"},
-    {"kernelSize", 0, 10, false, "cells in [0, 10]"},
-    {"lstep", 0, 10, true, "metres in (0, 10]"},
-    {"astep", 0, 3.2, true, "radians in (0, pi]"},
-    {"iterations", 0, 100, false, "a count in [0, 100]"},
-    {"lsigma", 0, 1e3, true, "a value > 0"},
-    {"lskip", 0, 1e4, false, "a count >= 0"},
-    {"srr", 0, 10, false, "a noise factor in [0, 10]"},
-    {"srt", 0, 10, false, "a noise factor in [0, 10]"},
-    {"str", 0, 10, false, "a noise factor in [0, 10]"},
-    {"stt", 0, 10, false, "a noise factor in [0, 10]"},
-    {"maxRange", 0, 1e4, true, "metres in (0, 10000]"},
-    {"maxUrange", 0, 1e4, true, "metres in (0, 10000]"},
-};
+// The initial map's cells a side at most: 20 000 cells at 0.05 m is 1 km.
 constexpr double kMaxCellsPerSide = 20000;
 
 std::string shown(const std::string& name, double value, const std::string& rule) {
@@ -115,15 +88,13 @@ std::string shown(const std::string& name, double value, const std::string& rule
 }  // namespace
 
 std::string paramProblem(const SlamParams& params, bool max_range_set, bool max_urange_set) {
-  const auto& table = paramTable();
-  for (const Rule& rule : kRules) {
-    const std::string name = rule.name;
-    if ((name == "maxRange" && !max_range_set) || (name == "maxUrange" && !max_urange_set)) continue;
-    const auto it = std::find_if(table.begin(), table.end(),
-                                 [&](const ParamEntry& e) { return e.name == name; });
-    const double v = it->get(params);
-    const bool above_lo = rule.lo_open ? v > rule.lo : v >= rule.lo;
-    if (!std::isfinite(v) || !above_lo || v > rule.hi) return shown(name, v, rule.text);
+  for (const ParamEntry& e : paramTable()) {
+    const ParamBounds& b = e.bounds;
+    if (b.rule.empty()) continue;
+    if ((e.name == "maxRange" && !max_range_set) || (e.name == "maxUrange" && !max_urange_set)) continue;
+    const double v = e.get(params);
+    const bool above_lo = b.lo_open ? v > b.lo : v >= b.lo;
+    if (!std::isfinite(v) || !above_lo || v > b.hi) return shown(e.name, v, b.rule);
   }
   if (!(params.xmin < params.xmax)) return shown("xmin", params.xmin, "below xmax");
   if (!(params.ymin < params.ymax)) return shown("ymin", params.ymin, "below ymax");

@@ -10,10 +10,18 @@
 
 namespace gmapping_lite {
 
+// What values a parameter may take; `rule` (empty: any value) says so in words.
+struct ParamBounds {
+  double lo = 0, hi = 0;
+  bool lo_open = false;  // lo itself not allowed
+  std::string rule;
+};
+
 struct ParamEntry {
   std::string name;
   std::function<double(const SlamParams&)> get;
   std::function<void(SlamParams*, double)> set;
+  ParamBounds bounds;
 };
 
 // Every numeric parameter of the filter. maxRange / maxUrange are included; when they are not
