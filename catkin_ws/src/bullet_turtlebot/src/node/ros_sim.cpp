@@ -213,8 +213,10 @@ void RosSimulator::on_velocity(const std::string& topic, int mux_input, const ge
   const CommandCheck check = check_command(linear, angular, huge_linear_, huge_angular_);
   if (check != CommandCheck::kOk) {
     const ros::WallTime now = ros::WallTime::now();
-    if ((now - last_reject_warning_).toSec() >= 1.0) {
-      last_reject_warning_ = now;
+    ros::WallTime& last_warning =
+        check == CommandCheck::kNotFinite ? last_nonfinite_warning_ : last_too_large_warning_;
+    if ((now - last_warning).toSec() >= 1.0) {
+      last_warning = now;
       ROS_WARN("Rejected velocity command on %s (linear.x=%g angular.z=%g): %s; the base keeps its current command",
                topic.c_str(), msg.linear.x, msg.angular.z,
                check == CommandCheck::kNotFinite

@@ -69,7 +69,8 @@ class RosSimulator {
   bool paused_ = false;
   std::uint64_t steps_ = 0;
   ros::WallTime last_cmd_vel_warning_;
-  ros::WallTime last_reject_warning_;
+  // Throttled per reason, so a flood of one kind of bad command cannot hide another kind.
+  ros::WallTime last_nonfinite_warning_, last_too_large_warning_;
 
   ros::Publisher clock_pub_, odom_pub_, truth_pub_, tf_pub_, scan_pub_, bumper_pub_;
   ros::Publisher depth_pub_, depth_info_pub_, points_pub_, rgb_pub_, rgb_info_pub_;
