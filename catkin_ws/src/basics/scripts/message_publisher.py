@@ -10,7 +10,7 @@ from basics.msg import Complex
 def main():
     rospy.init_node("message_publisher")
     pub = rospy.Publisher("complex", Complex, queue_size=10)
-    rate = rospy.Rate(2)
+    rate = rospy.Rate(2, reset=True)  # reset: survive sim time jumping back
     while not rospy.is_shutdown():
         msg = Complex()
         msg.real = random()

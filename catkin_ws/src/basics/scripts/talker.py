@@ -11,7 +11,7 @@ from std_msgs.msg import String
 def main():
     rospy.init_node("talker")
     pub = rospy.Publisher("chatter", String, queue_size=10)
-    rate = rospy.Rate(10)
+    rate = rospy.Rate(10, reset=True)  # reset: survive sim time jumping back
     while not rospy.is_shutdown():
         hello = f"hello world {rospy.get_time()}"
         rospy.loginfo(hello)

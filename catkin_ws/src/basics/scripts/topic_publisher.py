@@ -8,7 +8,7 @@ from std_msgs.msg import Int32
 def main():
     rospy.init_node("topic_publisher")
     pub = rospy.Publisher("counter", Int32, queue_size=10)
-    rate = rospy.Rate(2)
+    rate = rospy.Rate(2, reset=True)  # reset: survive sim time jumping back
     count = 0
     while not rospy.is_shutdown():
         pub.publish(count)

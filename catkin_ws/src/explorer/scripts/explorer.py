@@ -286,7 +286,7 @@ class ExplorerNode:
         while not rospy.is_shutdown() and rospy.get_rostime().is_zero():
             time.sleep(0.01)  # sim time: wait for /clock
         rospy.on_shutdown(lambda: self.cmd_pub.publish(Twist()))
-        rospy.Timer(rospy.Duration(1.0 / self.control_rate), self.control)
+        rospy.Timer(rospy.Duration(1.0 / self.control_rate), self.control, reset=True)
         rospy.loginfo(f"explorer: exploring ({self.map_frame} -> {self.base_frame})")
         self.planning_loop()
 

@@ -94,7 +94,7 @@ class MoveBase:
             rospy.get_name(), MoveBaseAction, execute_cb=self.execute, auto_start=False
         )
         self.server.start()
-        rospy.Timer(rospy.Duration(0.5), self.publish_local_costmap)
+        rospy.Timer(rospy.Duration(0.5), self.publish_local_costmap, reset=True)
 
     # -- inputs -------------------------------------------------------------------
     def on_map(self, msg):
@@ -209,7 +209,7 @@ class MoveBase:
             return self.planner.blocked_ahead(path, xy, self.nav_params.blocked_lookahead)
 
     def execute(self, goal_msg):
-        rate = rospy.Rate(self.rate)
+        rate = rospy.Rate(self.rate, reset=True)  # survive sim time jumping back
         while not rospy.is_shutdown():
             with self.lock:
                 ready = self.planner is not None

@@ -41,7 +41,7 @@ class KeysToTwist:
             self.twist_pub.publish(self.last_twist)
 
     def spin(self, hz=10):
-        rate = rospy.Rate(hz)
+        rate = rospy.Rate(hz, reset=True)  # reset: survive sim time jumping back
         while not rospy.is_shutdown():
             with self.lock:
                 self.twist_pub.publish(self.last_twist)

@@ -52,7 +52,7 @@ class RampedKeysToTwist:
 
     def spin(self, hz=20):
         # Only the timed loop publishes, so every step is limited by accel * (loop period).
-        rate = rospy.Rate(hz)
+        rate = rospy.Rate(hz, reset=True)  # reset: survive sim time jumping back
         while not rospy.is_shutdown() and rospy.get_rostime().is_zero():
             rospy.sleep(0.01)  # sim time: wait for /clock, or the first dt spans the epoch
         last_time = rospy.get_time()

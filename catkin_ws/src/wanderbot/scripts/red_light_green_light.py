@@ -16,7 +16,7 @@ def main():
     green_light_twist = Twist()
     green_light_twist.linear.x = 0.5  # drive straight ahead at 0.5 m/s
 
-    rate = rospy.Rate(10)
+    rate = rospy.Rate(10, reset=True)  # reset: survive sim time jumping back
     wait_for_clock()
     light = TrafficLight(rospy.get_time(), period=3.0)
     rospy.on_shutdown(lambda: cmd_vel_pub.publish(red_light_twist))

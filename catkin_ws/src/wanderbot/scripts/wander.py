@@ -38,7 +38,7 @@ class WanderNode:
             self.got_scan = True
 
     def run(self):
-        rate = rospy.Rate(10)
+        rate = rospy.Rate(10, reset=True)  # reset: survive sim time jumping back
         while not rospy.is_shutdown() and (rospy.get_rostime().is_zero() or not self.got_scan):
             rospy.sleep(0.05)  # wait for /clock (sim time) and a first look ahead
         wanderer = Wanderer(rospy.get_time(), self.min_range, self.drive_time, self.spin_time)

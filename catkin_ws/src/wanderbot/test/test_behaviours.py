@@ -72,3 +72,23 @@ def test_param_checks():
     for bad in (0, -1.0, float("inf")):
         with pytest.raises(ParamError, match="~x"):
             positive_number("~x", bad)
+
+
+def test_traffic_light_keeps_alternating_after_time_jumps_back():
+    # A simulator restart: the clock goes from 500 s back to 1 s.
+    light = TrafficLight(490.0, period=3.0)
+    for i in range(100):
+        light.update(490.0 + i * 0.1)
+    states = [light.update(1.0 + i * 0.1) for i in range(100)]
+    changes = sum(1 for a, b in zip(states, states[1:], strict=False) if a != b)
+    assert changes >= 3  # still flipping every 3 s of the new clock, not stuck till 500 s
+
+
+def test_wanderer_keeps_its_timing_after_time_jumps_back():
+    wanderer = Wanderer(400.0, min_range=0.8, drive_time=2.0, spin_time=1.0)
+    for i in range(10):
+        wanderer.update(400.0 + i * 0.1, 5.0)
+    states = [wanderer.update(1.0 + i * 0.1, 5.0) for i in range(60)]
+    assert Wanderer.SPIN in states and states[-1] in (Wanderer.DRIVE, Wanderer.SPIN)
+    first_spin = states.index(Wanderer.SPIN)
+    assert first_spin <= 21  # the drive phase is timed from the jump: about 2 s, not 400 s

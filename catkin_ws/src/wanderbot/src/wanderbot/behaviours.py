@@ -16,8 +16,14 @@ class TrafficLight:
         self.period = float(period)
         self.driving = False
         self.change_time = float(start_time)
+        self.last_now = float(start_time)
 
     def update(self, now):
+        if now < self.last_now:
+            # Time jumped back (simulator restarted, `rosbag play --loop`): the pending change
+            # is in the new clock's far future; time the current phase from now instead.
+            self.change_time = now + self.period
+        self.last_now = now
         if now >= self.change_time:
             self.driving = not self.driving
             self.change_time = now + self.period
@@ -42,11 +48,19 @@ class Wanderer:
         self.spin_time = float(spin_time)
         self.state = self.DRIVE
         self.state_change_time = float(start_time) + self.drive_time
+        self.last_now = float(start_time)
 
     def blocked(self, range_ahead):
         return range_ahead is None or math.isnan(range_ahead) or range_ahead < self.min_range
 
     def update(self, now, range_ahead):
+        if now < self.last_now:
+            # Time jumped back (simulator restarted, `rosbag play --loop`): time the current
+            # state afresh from now rather than waiting for the old clock's deadline.
+            self.state_change_time = now + (
+                self.drive_time if self.state == self.DRIVE else self.spin_time
+            )
+        self.last_now = now
         if self.state == self.DRIVE:
             if self.blocked(range_ahead) or now > self.state_change_time:
                 self.state = self.SPIN
