@@ -22,7 +22,10 @@ node's main thread sleeps); should it happen, the clock moves on without a messa
 Injections at sim time T (seconds after --start, a whole number of ticks), made after that
 tick's message and before the next tick:
   --say TOPIC=TEXT@T[/ECHOES]  publish std_msgs/String TEXT on TOPIC, then wait for ECHOES
-                               more gate messages (a node that answers each input at once)
+                               more changes of the gate message (a node that answers each
+                               input at once with a new value). Changes, not messages: a
+                               rate message still on its way would pass for the answer, and
+                               the node could then take the input ticks late.
   --type TEXT@T[-T2]           write TEXT to the terminal --tty-fd at T (and every tick to T2)
 
 With --step-service (the simulator's ~step, std_srvs/Trigger, when it starts paused) the
@@ -70,6 +73,8 @@ class Lockstep:
         self.out = open(out, "w") if out else None
         self.cond = threading.Condition()
         self.arrivals = 0
+        self.changes = 0  # gate messages unlike the one before them
+        self.last_msg = None
         self.tick = 0
         self.gate_topic = rospy.resolve_name(gate)
         self.gate_sub = None
@@ -116,9 +121,13 @@ class Lockstep:
             self.wait(lambda p=pub: p.get_num_connections() > 0, f"a subscriber of {pub.name}")
 
     def _on_gate(self, msg):
+        plain = to_plain(msg)
         with self.cond:
-            self._write({"tick": self.tick, "clock": self.clock_ns / NS, "msg": to_plain(msg)})
+            self._write({"tick": self.tick, "clock": self.clock_ns / NS, "msg": plain})
             self.arrivals += 1
+            if self.arrivals > 1 and plain != self.last_msg:
+                self.changes += 1
+            self.last_msg = plain
             self.cond.notify_all()
 
     def _write(self, record):
@@ -131,14 +140,19 @@ class Lockstep:
         with self.cond:
             return self.arrivals
 
-    def expect(self, target, credit=False):
-        """Wait until `target` gate messages have arrived in all; with `credit`, move on
-        without them once --credit wall seconds have passed (not twice in a row)."""
+    def changed(self):
+        with self.cond:
+            return self.changes
+
+    def expect(self, target, credit=False, count="arrivals"):
+        """Wait until `target` gate messages have arrived in all (count="changes": changes
+        of the message); with `credit`, move on without them once --credit wall seconds
+        have passed (not twice in a row)."""
         now = time.monotonic()
         deadline, credit_at = now + self.timeout, now + self.credit
         while True:
             with self.cond:
-                if self.arrivals >= target:
+                if getattr(self, count) >= target:
                     return True
             now = time.monotonic()
             if credit and self.credit and now > credit_at and not self._last_was_credit:
@@ -147,7 +161,8 @@ class Lockstep:
                 return False
             if now > deadline:
                 raise LockstepError(
-                    f"no message on {self.gate_topic} within {self.timeout} s at sim time "
+                    f"no {'new value' if count == 'changes' else 'message'} on "
+                    f"{self.gate_topic} within {self.timeout} s at sim time "
                     f"{self.clock_ns / NS:.3f} (tick {self.tick})"
                 )
             self.publish_clock()
@@ -156,8 +171,8 @@ class Lockstep:
 
     def run(self, ticks, on_tick=None):
         """Advance `ticks` ticks; on_tick(tick) injects inputs after the tick's message and
-        returns how many more gate messages they cause (on_tick(0): before the first tick,
-        answers not awaited)."""
+        returns how many changes of the gate message they cause (on_tick(0): before the
+        first tick, answers not awaited)."""
         if on_tick is not None:
             on_tick(0)
         for _ in range(ticks):
@@ -168,10 +183,10 @@ class Lockstep:
             self.advance()
             self._last_was_credit = not self.expect(target, credit=True)
             if on_tick is not None:
-                target = self.arrived()
+                target = self.changed()
                 echoes = on_tick(self.tick)
                 if echoes:
-                    self.expect(target + echoes)
+                    self.expect(target + echoes, count="changes")
         if self.out:
             self.out.close()
 

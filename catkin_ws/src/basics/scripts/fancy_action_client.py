@@ -9,6 +9,7 @@ The book's three runs, without editing the code:
 
 import argparse
 import sys
+import threading
 import time
 
 import rospy
@@ -16,10 +17,21 @@ from basics import timer
 from basics.action_client import SimpleActionClient
 from basics.msg import TimerAction, TimerGoal
 
+PRINTING = threading.Lock()
+
+
+def print_block(lines):
+    """Print `lines` as one block: feedback arrives on rospy's thread while the main thread
+    prints the result, and print() writes a line and its newline separately."""
+    with PRINTING:
+        sys.stdout.write("".join(line + "\n" for line in lines))
+        sys.stdout.flush()
+
 
 def feedback_cb(feedback):
-    lines = timer.feedback_lines(feedback.time_elapsed.to_sec(), feedback.time_remaining.to_sec())
-    print("\n".join(lines), flush=True)
+    print_block(
+        timer.feedback_lines(feedback.time_elapsed.to_sec(), feedback.time_remaining.to_sec())
+    )
 
 
 def main():
@@ -68,7 +80,7 @@ def main():
         None if result is None else result.time_elapsed.to_sec(),
         None if result is None else result.updates_sent,
     )
-    print("\n".join(lines), flush=True)
+    print_block(lines)
     return 0
 
 
