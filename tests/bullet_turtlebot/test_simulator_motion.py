@@ -84,8 +84,11 @@ def test_nan_inf_and_huge_commands_are_rejected_with_a_warning(ros, tmp_path):
         publish_once(ros, "cmd_vel_mux/input/teleop", linear=value)
     publish_once(ros, "mobile_base/commands/velocity", angular="-inf")
     # Each reason is warned about (throttled per reason, so one cannot hide the other).
-    for text in ("Rejected velocity command on cmd_vel_mux/input/teleop", "NaN or infinite",
-                 "beyond the plausible limits"):
+    for text in (
+        "Rejected velocity command on cmd_vel_mux/input/teleop",
+        "NaN or infinite",
+        "beyond the plausible limits",
+    ):
         ros.wait_for(lambda text=text: text in ros.output(sim), 30, repr(text))
     wait_sim_seconds(ros, 1.0)
     assert last_pose(ros)[:3] == before
