@@ -1,9 +1,10 @@
 #!/usr/bin/python3
-"""Test helper: optionally sets amcl's initial pose, sends move_base goals one after another
-(or one goal and a second that preempts it), and writes one JSON line per goal: the final
-state and status text, the sim seconds it took, the true pose at the end (the simulator's
-base_pose_ground_truth, in the world frame the test maps share), and the largest and last
-amcl position error against the truth while it drove."""
+"""Test and bench helper: optionally sets amcl's initial pose (or scatters its particles
+with global_localization) and turns in place to let it converge, sends move_base goals one
+after another (or one goal and a second that preempts it), and writes one JSON line per
+goal: the final state and status text, the sim seconds it took, the true pose at the end
+(the simulator's base_pose_ground_truth, in the world frame the test maps share), and the
+largest and last amcl position error against the truth while it drove."""
 
 import argparse
 import bisect
@@ -14,9 +15,10 @@ import threading
 import actionlib
 import rospy
 from actionlib_msgs.msg import GoalStatus
-from geometry_msgs.msg import PoseWithCovarianceStamped
+from geometry_msgs.msg import PoseWithCovarianceStamped, Twist
 from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
 from nav_msgs.msg import Odometry
+from std_srvs.srv import Empty
 
 STATES = {v: k for k, v in vars(GoalStatus).items() if k.isupper() and isinstance(v, int)}
 
@@ -79,12 +81,36 @@ def goal_of(x, y, yaw):
     return goal
 
 
+def turn_in_place(recorder, seconds, topic, rate=0.8):
+    """Turn left at `rate` rad/s for `seconds` of sim time (amcl updates on rotation), then
+    stop; returns amcl's error against the truth at the end."""
+    pub = rospy.Publisher(topic, Twist, queue_size=1)
+    t0 = rospy.get_time()
+    spin = Twist()
+    spin.angular.z = rate
+    ticker = rospy.Rate(10, reset=True)
+    while not rospy.is_shutdown() and rospy.get_time() - t0 < seconds:
+        pub.publish(spin)
+        ticker.sleep()
+    pub.publish(Twist())
+    errors = recorder.errors_since(t0)
+    return {
+        "settled": seconds,
+        "amcl_last_error": errors[-1] if errors else None,
+        "amcl_updates": len(errors),
+    }
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--out", required=True)
     parser.add_argument("--goal", action="append", default=[], help="x,y,yaw (repeatable)")
     parser.add_argument("--initial-pose", help="x,y,yaw sent on initialpose first")
+    parser.add_argument(
+        "--global-localization", action="store_true", help="call amcl's global_localization first"
+    )
     parser.add_argument("--settle", type=float, default=0.0, help="sim s to turn in place first")
+    parser.add_argument("--settle-cmd-vel", default="cmd_vel_mux/input/navi", help="for --settle")
     parser.add_argument("--preempt-after", type=float, help="sim s before goal 2 preempts goal 1")
     parser.add_argument("--obstacle", help="x,y: report the robot's nearest approach to it")
     parser.add_argument("--goal-timeout", type=float, default=120.0, help="sim s per goal")
@@ -115,6 +141,11 @@ def main():
         rospy.sleep(1.0)  # sim time: let amcl's subscription connect (latched anyway)
         pub.publish(msg)
         rospy.sleep(1.0)
+    if args.global_localization:
+        rospy.wait_for_service("global_localization", timeout=60)
+        rospy.ServiceProxy("global_localization", Empty)()
+    if args.settle > 0:
+        out.write(json.dumps(turn_in_place(recorder, args.settle, args.settle_cmd_vel)) + "\n")
     goals = [tuple(float(v) for v in g.split(",")) for g in args.goal]
     if args.preempt_after is not None:
         t0 = rospy.get_time()
