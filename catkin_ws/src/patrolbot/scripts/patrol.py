@@ -10,6 +10,7 @@ and stops the robot."""
 
 import argparse
 import sys
+import time
 
 import actionlib
 import rospy
@@ -51,13 +52,40 @@ def main():
         except WaypointError as e:
             sys.exit(f"patrol.py: {e}")
 
-    rospy.init_node("patrol")
+    # Ctrl-C is ours (KeyboardInterrupt), not rospy's: a cancel sent from rospy's shutdown
+    # hook can be lost with the connection, and the robot would drive on to the goal.
+    rospy.init_node("patrol", disable_signals=True)
     client = actionlib.SimpleActionClient("move_base", MoveBaseAction)
-    rospy.on_shutdown(client.cancel_all_goals)  # Ctrl-C: the robot stops where it is
+    try:
+        patrol(client, poses, args.loops)
+    except KeyboardInterrupt:
+        if cancel_and_confirm(client):
+            rospy.loginfo("patrol: interrupted; the current goal is cancelled")
+        else:
+            rospy.logwarn("patrol: interrupted; move_base did not confirm the cancel")
+    finally:
+        rospy.signal_shutdown("patrol done")
+
+
+def cancel_and_confirm(client, wall_timeout=5.0):
+    """Cancel the current goal and wait until move_base says it ended, so the cancel is
+    not lost when the node exits at once. Wall time: the simulator may have stopped.
+    True when nothing is left running."""
+    if client.gh is None:
+        return True  # no goal sent yet
+    client.cancel_goal()
+    running = (GoalStatus.PENDING, GoalStatus.ACTIVE)  # incl. RECALLING and PREEMPTING
+    deadline = time.monotonic() + wall_timeout
+    while client.get_state() in running and time.monotonic() < deadline:
+        time.sleep(0.05)
+    return client.get_state() not in running
+
+
+def patrol(client, poses, loops):
     rospy.loginfo("patrol: waiting for the move_base action server")
     client.wait_for_server()
     loop = 0
-    while not rospy.is_shutdown() and (args.loops <= 0 or loop < args.loops):
+    while not rospy.is_shutdown() and (loops <= 0 or loop < loops):
         for pose in poses:
             client.send_goal(goal_pose(pose))
             client.wait_for_result()
