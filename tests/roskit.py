@@ -80,8 +80,10 @@ class RosGraph:
         self.procs.append(proc)
         return proc
 
-    def run(self, cmd, timeout=30, check=True, input=None, cwd=None):
-        """Run a command to completion; returns CompletedProcess with text output."""
+    def run(self, cmd, timeout=120, check=True, input=None, cwd=None):
+        """Run a command to completion; returns CompletedProcess with text output. The
+        timeout only catches a hang: on a loaded machine even `roslaunch --nodes` (a few
+        rospack calls) has taken over 30 s."""
         done = subprocess.run(
             cmd,
             shell=isinstance(cmd, str),

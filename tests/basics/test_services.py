@@ -9,7 +9,7 @@ from roskit import free_port, ros_environment
 
 
 def call_word_count(ros, service, words):
-    done = ros.run(["rosservice", "call", service, words], timeout=30)
+    done = ros.run(["rosservice", "call", service, words])
     return int(re.fullmatch(r"count: (\d+)\s*", done.stdout).group(1))
 
 

@@ -92,7 +92,7 @@ def wait_sim_seconds(ros, seconds, timeout=60):
 
 
 def call_service(ros, name, srv_type="std_srvs/Empty"):
-    return ros.run(["rosservice", "call", name], timeout=30)
+    return ros.run(["rosservice", "call", name])
 
 
 def ranges(msg):

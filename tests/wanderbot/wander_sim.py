@@ -30,7 +30,7 @@ def start_sim(ros, launch="simulator.launch", pkg="bullet_turtlebot", **args):
 
 
 def unpause(ros):
-    ros.run(["rosservice", "call", "/simulator/unpause"], timeout=30)
+    ros.run(["rosservice", "call", "/simulator/unpause"])
 
 
 def wait_sim_seconds(ros, probe, sim_seconds, topic, timeout=600):
