@@ -35,8 +35,18 @@ bool setParam(SlamParams* params, const std::string& name, double value);
 // when all are usable. maxRange / maxUrange are checked only when set (see rangeDefaults).
 std::string paramProblem(const SlamParams& params, bool max_range_set, bool max_urange_set);
 
+// The largest range_max the defaults below take from a scan (m). gmapping's own maxUrange
+// default is 80 m, ten times the Turtlebot's 8 m and well beyond the book's lasers (a
+// Hokuyo's 30 m at most); a driver that reports 1e4, 1e30 or inf as "no limit" would otherwise
+// make every "no return" beam clear space out that far, and the grid grown to hold it
+// (0.05 m cells) exhaust memory.
+constexpr double kMaxDefaultRange = 80.0;
+
 // gmapping's defaults from a scan: maxRange = range_max - 0.01 (so "no return" readings at
-// range_max clear space), maxUrange = maxRange, each only if not set explicitly.
-void rangeDefaults(SlamParams* params, double range_max, bool max_range_set, bool max_urange_set);
+// range_max clear space), maxUrange = maxRange, each only if not set explicitly. A range_max
+// above kMaxDefaultRange (or not finite) counts as kMaxDefaultRange; the return value then
+// says so in one line (empty otherwise), for the caller to warn once.
+std::string rangeDefaults(SlamParams* params, double range_max, bool max_range_set,
+                          bool max_urange_set);
 
 }  // namespace gmapping_lite
