@@ -30,6 +30,22 @@ def drive(ros, *options, timeout=120):
     assert robot.returncode == 0, ros.output(robot)
 
 
+def record_drive(ros, bag, *options):
+    """Drive the robot (with `options`) while rosbag records its scans and tf into `bag`."""
+    topics = ["/scan", "/tf", "/tf_static"]
+    recorder = ros.start(["rosbag", "record", "-O", str(bag), *topics])
+
+    def subscribed():
+        subscribers = dict(ros.system_state()[1])
+        return all(any("record" in n for n in subscribers.get(t, [])) for t in topics)
+
+    ros.wait_for(subscribed, 60, "rosbag record to subscribe to " + ", ".join(topics))
+    drive(ros, *options)
+    ros.stop(recorder)
+    # rosbag's recording child closes (renames) the bag after the wrapper has exited.
+    ros.wait_for(lambda: Path(bag).exists(), 60, "the bag to be closed")
+
+
 def seconds(stamp):
     """A recorded time (the probe records rospy.Time as {secs, nsecs}) in seconds."""
     return stamp["secs"] + stamp["nsecs"] * 1e-9 if isinstance(stamp, dict) else stamp

@@ -1,7 +1,8 @@
 """slam_gmapping (gmapping_lite) fed scans whose layout no laser can have: each is dropped
 with a throttled warning naming the reason and the running count, the node keeps running,
-and the good scans that follow still build the map. Also a laser reporting a huge range_max
-("no limit"): the default maxRange is clamped to 80 m, said once, and the map is sane."""
+and the good scans that follow still build the map; slam_offline likewise over a bag. Also a
+laser reporting a huge range_max ("no limit"): the default maxRange is clamped to 80 m, said
+once, and the map is sane."""
 
 import re
 import sys
@@ -10,7 +11,14 @@ from pathlib import Path
 import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from slam_node_kit import assert_room_mapped, drive, seconds, start_slam  # noqa: E402
+from slam_node_kit import (  # noqa: E402
+    BOOK_BOUNDS,
+    assert_room_mapped,
+    drive,
+    record_drive,
+    seconds,
+    start_slam,
+)
 
 MALFORMED_UNTIL = 6.0  # sim seconds after the robot's start (100 s) of malformed scans
 DROPPED = re.compile(
@@ -47,6 +55,26 @@ def test_malformed_scans_are_dropped_counted_and_named(ros, kind):
     assert seconds(grid["header"]["stamp"]) >= 100.0 + MALFORMED_UNTIL
     assert_room_mapped(grid)
     assert "update 0 (scan" in log
+
+
+def test_slam_offline_drops_malformed_scans_from_a_bag(ros, tmp_path):
+    bag = tmp_path / "data.bag"
+    record_drive(ros, bag, "--duration", "26", "--malformed", "short")
+    cmd = ["rosrun", "gmapping_lite", "slam_offline", str(bag), "--out", str(tmp_path / "map")]
+    cmd += ["--base-frame", "base_footprint"]
+    for name, value in BOOK_BOUNDS.items():
+        cmd += ["--param", f"{name}={value}"]
+    done = ros.run(cmd, timeout=120)
+    # Throttled by bag time: 3 s of malformed scans give one line, the first.
+    drops = DROPPED.findall(done.stderr)
+    assert len(drops) == 1, done.stderr
+    assert float(drops[0][0]) == pytest.approx(100.0)
+    assert REASONS["short"] in drops[0][1] and drops[0][2] == "1", drops
+    # The summary counts them all (30 scans in the first 3 s, less any the recorder missed).
+    summary = re.search(r"(\d+) scans \(\d+ without odometry, (\d+) malformed\)", done.stdout)
+    assert summary, done.stdout + done.stderr
+    assert 0 < int(summary[2]) <= 30 and int(summary[1]) > 200, summary[0]
+    assert (tmp_path / "map.pgm").exists() and (tmp_path / "map.yaml").exists()
 
 
 def test_huge_range_max_is_clamped_once_for_the_default_max_range(ros):

@@ -15,6 +15,7 @@ from slam_node_kit import (  # noqa: E402
     cell,
     drive,
     near,
+    record_drive,
     seconds,
     start_slam,
 )
@@ -170,14 +171,7 @@ def test_missing_odometry_tf_is_named_and_throttled(ros):
 
 def test_bag_played_with_clock(ros, tmp_path):
     bag = tmp_path / "data.bag"
-    recorder = ros.start(["rosbag", "record", "-O", str(bag), "/scan", "/tf", "/tf_static"])
-    ros.wait_for(
-        lambda: "/record" in ros.run(["rosnode", "list"], check=False).stdout, 60, "rosbag record"
-    )
-    drive(ros, "--duration", "40", "--speed", "4")
-    ros.stop(recorder)
-    # rosbag's recording child closes (renames) the bag after the wrapper has exited.
-    ros.wait_for(lambda: bag.exists(), 60, "the bag to be closed")
+    record_drive(ros, bag, "--duration", "40", "--speed", "4")
     node = start_slam(ros, map_update_interval=1.0)
     ros.run(["rosbag", "play", "--clock", "-r", "4", str(bag)], timeout=60)
     assert_room_mapped(ros.echo("map")[0]["msg"])

@@ -138,7 +138,7 @@ int main(int argc, char** argv) {
   std::unique_ptr<ParticleFilter> filter;
   std::map<std::string, std::pair<std::size_t, LaserGeometry>> lasers;
   int scans = 0, dropped = 0, loop_attempts = 0, loops = 0, rebuilds = 0;
-  ScanDrops malformed(5.0);  // warn at most every 5 s of bag time, each line with the count
+  ScanDrops malformed(5.0);  // warn at most every 5 s of scan time, each line with the count
   double first_stamp = -1, last_stamp = 0;
   for (const rosbag::MessageInstance& m : scan_view) {
     const auto scan = m.instantiate<sensor_msgs::LaserScan>();
@@ -147,7 +147,7 @@ int main(int argc, char** argv) {
     if (const auto problem =
             scanProblem(scan->angle_min, scan->angle_max, scan->angle_increment,
                         scan->ranges.size(), scan->range_min, scan->range_max)) {
-      if (malformed.count(m.getTime().toSec()))
+      if (malformed.count(scan->header.stamp.toSec()))
         std::fprintf(stderr,
                      "slam_offline: dropping a malformed scan on frame '%s' at %.3f: %s; "
                      "malformed scans dropped so far: %d\n",
