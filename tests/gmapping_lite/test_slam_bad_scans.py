@@ -71,7 +71,9 @@ def test_slam_offline_drops_malformed_scans_from_a_bag(ros, tmp_path):
     assert float(drops[0][0]) == pytest.approx(100.0)
     assert REASONS["short"] in drops[0][1] and drops[0][2] == "1", drops
     # The summary counts them all (30 scans in the first 3 s, less any the recorder missed).
-    summary = re.search(r"(\d+) scans \(\d+ without odometry, (\d+) malformed\)", done.stdout)
+    # Every good scan finds its odometry, though the recorder's clock (wall time, the robot
+    # runs at 4x) spans a quarter of the stamps' 26 s.
+    summary = re.search(r"(\d+) scans \(0 without odometry, (\d+) malformed\)", done.stdout)
     assert summary, done.stdout + done.stderr
     assert 0 < int(summary[2]) <= 30 and int(summary[1]) > 200, summary[0]
     assert (tmp_path / "map.pgm").exists() and (tmp_path / "map.yaml").exists()

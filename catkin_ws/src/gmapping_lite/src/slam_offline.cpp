@@ -9,11 +9,13 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <sensor_msgs/LaserScan.h>
@@ -116,18 +118,31 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "slam_offline: cannot open %s: %s\n", o.bag.c_str(), e.what());
     return 1;
   }
-  // Pass 1: all of tf, so each scan can be placed whatever order the bag holds it in.
+  // Pass 1: all of tf, so each scan can be placed whatever order the bag holds it in. The
+  // buffer must hold the span of the transforms' stamps, not of the bag's record times: a
+  // simulation recorded without use_sim_time runs faster than the recorder's wall clock.
   rosbag::View tf_view(bag, rosbag::TopicQuery(std::vector<std::string>{"/tf", "/tf_static"}));
-  const double span = (tf_view.getEndTime() - tf_view.getBeginTime()).toSec() + 10.0;
-  tf2::BufferCore tf(ros::Duration(std::max(10.0, span)));
-  std::size_t tf_count = 0;
+  std::vector<std::pair<tf2_msgs::TFMessage::ConstPtr, bool>> tf_messages;
+  double first_tf = 0, last_tf = 0;
+  bool have_stamp = false;
   for (const rosbag::MessageInstance& m : tf_view) {
     const auto msg = m.instantiate<tf2_msgs::TFMessage>();
     if (!msg) continue;
     const bool is_static = m.getTopic() == "/tf_static";
-    for (const auto& t : msg->transforms) tf.setTransform(t, "bag", is_static);
-    ++tf_count;
+    for (const auto& t : msg->transforms) {
+      if (is_static) continue;
+      const double stamp = t.header.stamp.toSec();
+      first_tf = have_stamp ? std::min(first_tf, stamp) : stamp;
+      last_tf = have_stamp ? std::max(last_tf, stamp) : stamp;
+      have_stamp = true;
+    }
+    tf_messages.emplace_back(msg, is_static);
   }
+  tf2::BufferCore tf(ros::Duration(std::max(10.0, last_tf - first_tf + 10.0)));
+  for (const auto& [msg, is_static] : tf_messages)
+    for (const auto& t : msg->transforms) tf.setTransform(t, "bag", is_static);
+  const std::size_t tf_count = tf_messages.size();
+  tf_messages.clear();
 
   rosbag::View scan_view(bag, rosbag::TopicQuery(std::vector<std::string>{o.scan_topic}));
   if (scan_view.size() == 0) {
