@@ -89,11 +89,12 @@ std::optional<std::string> scanProblem(double angle_min, double angle_max, doubl
   return std::nullopt;
 }
 
-bool ScanDrops::count(double now) {
+bool ScanDrops::count(double stamp) {
   ++total_;
-  if (reported_ && now >= last_report_ && now < last_report_ + period_) return false;
+  const bool jumped_back = stamp < last_report_ - period_;
+  if (reported_ && !jumped_back && stamp < last_report_ + period_) return false;
   reported_ = true;
-  last_report_ = now;
+  last_report_ = stamp;
   return true;
 }
 

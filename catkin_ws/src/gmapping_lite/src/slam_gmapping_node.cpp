@@ -165,7 +165,7 @@ class SlamGmappingNode {
     if (const auto problem =
             scanProblem(scan->angle_min, scan->angle_max, scan->angle_increment,
                         scan->ranges.size(), scan->range_min, scan->range_max)) {
-      if (malformed_.count(ros::Time::now().toSec()))
+      if (malformed_.count(scan->header.stamp.toSec()))
         ROS_WARN("slam_gmapping: dropping a malformed scan on frame '%s' at %.3f: %s; "
                  "malformed scans dropped so far: %d",
                  scan->header.frame_id.c_str(), scan->header.stamp.toSec(), problem->c_str(),
@@ -315,7 +315,7 @@ class SlamGmappingNode {
   std::unique_ptr<ParticleFilter> filter_;
   std::map<std::string, LaserEntry> lasers_;
   int scans_received_ = 0, scans_dropped_ = 0;
-  ScanDrops malformed_{5.0};  // warn at most every 5 s (sim time), each line with the count
+  ScanDrops malformed_{5.0};  // warn at most every 5 s of scan time, each line with the count
 
   std::mutex tf_mutex_;
   Pose2 map_to_odom_;

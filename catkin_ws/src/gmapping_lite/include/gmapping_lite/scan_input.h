@@ -33,14 +33,15 @@ std::optional<std::string> scanProblem(double angle_min, double angle_max, doubl
 constexpr double kBeamCountTolerance = 1.5;
 
 // Counts scans dropped as malformed and says when to warn: the first at once, then at most
-// once every `period` seconds of the caller's clock (sim time for the node, bag time for
-// slam_offline); a clock that jumps back warns at once. A flood of bad scans gives a few lines,
-// each with the running count, and never stops the good ones.
+// once every `period` seconds of scan time (the dropped scans' stamps: the node's clock may
+// not have started when the first scan arrives, and a bag has no other); stamps that jump back
+// by more than a period (a bag played again) warn at once. A flood of bad scans gives a few
+// lines, each with the running count, and never stops the good ones.
 class ScanDrops {
  public:
   explicit ScanDrops(double period) : period_(period) {}
-  // Count one dropped scan at time `now`; true when this drop should be reported.
-  bool count(double now);
+  // Count one dropped scan stamped `stamp` (s); true when this drop should be reported.
+  bool count(double stamp);
   int total() const { return total_; }
 
  private:
