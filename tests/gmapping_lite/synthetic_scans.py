@@ -4,7 +4,8 @@ ray casting, perfect odometry on tf, its own /clock (so it runs under use_sim_ti
 
 The robot turns in place one full turn, then drives along +x and back. Options bend the
 sensor the ways real robots do: asymmetric scans, an upside-down or tilted laser, inf
-readings for open directions, a beam count that changes, or no odometry tf at all.
+readings for open directions, a beam count that changes, or no odometry tf at all; or
+malformed scans (a layout no laser can have) for the first seconds, good ones after.
 """
 
 import argparse
@@ -83,6 +84,26 @@ def trajectory(duration):
     return poses
 
 
+def zero_increment(scan):
+    scan.angle_increment = 0.0
+
+
+def half_the_ranges(scan):
+    scan.ranges = scan.ranges[: len(scan.ranges) // 2]
+
+
+def swap_range_limits(scan):
+    scan.range_min, scan.range_max = scan.range_max, scan.range_min
+
+
+# Ways to break a scan's layout (--malformed), each caught by gmapping_lite's scanProblem.
+MALFORMED = {
+    "zero-increment": zero_increment,
+    "short": half_the_ranges,
+    "range-order": swap_range_limits,
+}
+
+
 def wait_for_subscribers(publishers, timeout=60.0):
     """Wait until each publisher is connected to every subscriber the master knows of (and
     to as many as `publishers` says at least), so that nobody misses the start."""
@@ -118,6 +139,10 @@ def main():
     p.add_argument("--beams-after", type=int, default=0, help="beam count after half time")
     p.add_argument("--no-odom", action="store_true", help="never publish odom tf")
     p.add_argument("--start", type=float, default=100.0, help="sim time of the first tick")
+    p.add_argument("--malformed", choices=sorted(MALFORMED), help="break the first scans so")
+    p.add_argument(
+        "--malformed-until", type=float, default=3.0, help="sim seconds of malformed scans"
+    )
     args = p.parse_args(rospy.myargv()[1:])
 
     rospy.init_node("synthetic_scans")
@@ -187,6 +212,8 @@ def main():
             scan.time_increment, scan.scan_time = 0.0, 0.1
             scan.range_min, scan.range_max = 0.1, args.range_max
             scan.ranges = ranges.astype(np.float32).tolist()
+            if args.malformed and s < args.malformed_until:
+                MALFORMED[args.malformed](scan)
             scan_pub.publish(scan)
         seq += 1
         time.sleep(0.02 / args.speed)  # pacing only

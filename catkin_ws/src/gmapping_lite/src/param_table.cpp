@@ -106,10 +106,21 @@ std::string paramProblem(const SlamParams& params, bool max_range_set, bool max_
   return "";
 }
 
-void rangeDefaults(SlamParams* params, double range_max, bool max_range_set,
-                   bool max_urange_set) {
-  if (!max_range_set) params->matcher.max_range = range_max - 0.01;
+std::string rangeDefaults(SlamParams* params, double range_max, bool max_range_set,
+                          bool max_urange_set) {
+  std::string note;
+  if (!max_range_set && !(range_max <= kMaxDefaultRange)) {  // NaN and inf included
+    std::ostringstream out;
+    out << "the scan's range_max " << range_max << " is beyond " << kMaxDefaultRange
+        << " m; using maxRange " << kMaxDefaultRange
+        << " m (set ~maxRange / ~maxUrange for a longer laser)";
+    note = out.str();
+    range_max = kMaxDefaultRange;
+  }
+  // Less 0.01 m, but never down to 0 for a laser whose range_max is a few centimetres.
+  if (!max_range_set) params->matcher.max_range = std::max(range_max - 0.01, 0.5 * range_max);
   if (!max_urange_set) params->matcher.max_urange = params->matcher.max_range;
+  return note;
 }
 
 }  // namespace gmapping_lite

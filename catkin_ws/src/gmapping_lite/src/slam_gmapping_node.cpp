@@ -162,8 +162,14 @@ class SlamGmappingNode {
                              "waiting for /clock?)");
       return;
     }
-    if (scan->ranges.empty()) {
-      ROS_WARN_THROTTLE(5.0, "slam_gmapping: ignoring a scan without ranges");
+    if (const auto problem =
+            scanProblem(scan->angle_min, scan->angle_max, scan->angle_increment,
+                        scan->ranges.size(), scan->range_min, scan->range_max)) {
+      if (malformed_.count(scan->header.stamp.toSec()))
+        ROS_WARN("slam_gmapping: dropping a malformed scan on frame '%s' at %.3f: %s; "
+                 "malformed scans dropped so far: %d",
+                 scan->header.frame_id.c_str(), scan->header.stamp.toSec(), problem->c_str(),
+                 malformed_.total());
       return;
     }
     const LaserGeometry* laser = laserGeometry(*scan);
@@ -180,7 +186,9 @@ class SlamGmappingNode {
       return;
     }
     if (!filter_) {
-      rangeDefaults(&params_, scan->range_max, max_range_set_, max_urange_set_);
+      const std::string note =
+          rangeDefaults(&params_, scan->range_max, max_range_set_, max_urange_set_);
+      if (!note.empty()) ROS_WARN("slam_gmapping: %s", note.c_str());
       filter_ = std::make_unique<ParticleFilter>(params_);
       ROS_INFO("slam_gmapping: maxRange %.2f m, maxUrange %.2f m",
                params_.matcher.max_range, params_.matcher.max_urange);
@@ -307,6 +315,7 @@ class SlamGmappingNode {
   std::unique_ptr<ParticleFilter> filter_;
   std::map<std::string, LaserEntry> lasers_;
   int scans_received_ = 0, scans_dropped_ = 0;
+  ScanDrops malformed_{5.0};  // warn at most every 5 s of scan time, each line with the count
 
   std::mutex tf_mutex_;
   Pose2 map_to_odom_;

@@ -9,11 +9,13 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <sensor_msgs/LaserScan.h>
@@ -116,18 +118,31 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "slam_offline: cannot open %s: %s\n", o.bag.c_str(), e.what());
     return 1;
   }
-  // Pass 1: all of tf, so each scan can be placed whatever order the bag holds it in.
+  // Pass 1: all of tf, so each scan can be placed whatever order the bag holds it in. The
+  // buffer must hold the span of the transforms' stamps, not of the bag's record times: a
+  // simulation recorded without use_sim_time runs faster than the recorder's wall clock.
   rosbag::View tf_view(bag, rosbag::TopicQuery(std::vector<std::string>{"/tf", "/tf_static"}));
-  const double span = (tf_view.getEndTime() - tf_view.getBeginTime()).toSec() + 10.0;
-  tf2::BufferCore tf(ros::Duration(std::max(10.0, span)));
-  std::size_t tf_count = 0;
+  std::vector<std::pair<tf2_msgs::TFMessage::ConstPtr, bool>> tf_messages;
+  double first_tf = 0, last_tf = 0;
+  bool have_stamp = false;
   for (const rosbag::MessageInstance& m : tf_view) {
     const auto msg = m.instantiate<tf2_msgs::TFMessage>();
     if (!msg) continue;
     const bool is_static = m.getTopic() == "/tf_static";
-    for (const auto& t : msg->transforms) tf.setTransform(t, "bag", is_static);
-    ++tf_count;
+    for (const auto& t : msg->transforms) {
+      if (is_static) continue;
+      const double stamp = t.header.stamp.toSec();
+      first_tf = have_stamp ? std::min(first_tf, stamp) : stamp;
+      last_tf = have_stamp ? std::max(last_tf, stamp) : stamp;
+      have_stamp = true;
+    }
+    tf_messages.emplace_back(msg, is_static);
   }
+  tf2::BufferCore tf(ros::Duration(std::max(10.0, last_tf - first_tf + 10.0)));
+  for (const auto& [msg, is_static] : tf_messages)
+    for (const auto& t : msg->transforms) tf.setTransform(t, "bag", is_static);
+  const std::size_t tf_count = tf_messages.size();
+  tf_messages.clear();
 
   rosbag::View scan_view(bag, rosbag::TopicQuery(std::vector<std::string>{o.scan_topic}));
   if (scan_view.size() == 0) {
@@ -138,11 +153,23 @@ int main(int argc, char** argv) {
   std::unique_ptr<ParticleFilter> filter;
   std::map<std::string, std::pair<std::size_t, LaserGeometry>> lasers;
   int scans = 0, dropped = 0, loop_attempts = 0, loops = 0, rebuilds = 0;
+  ScanDrops malformed(5.0);  // warn at most every 5 s of scan time, each line with the count
   double first_stamp = -1, last_stamp = 0;
   for (const rosbag::MessageInstance& m : scan_view) {
     const auto scan = m.instantiate<sensor_msgs::LaserScan>();
-    if (!scan || scan->ranges.empty()) continue;
+    if (!scan) continue;
     ++scans;
+    if (const auto problem =
+            scanProblem(scan->angle_min, scan->angle_max, scan->angle_increment,
+                        scan->ranges.size(), scan->range_min, scan->range_max)) {
+      if (malformed.count(scan->header.stamp.toSec()))
+        std::fprintf(stderr,
+                     "slam_offline: dropping a malformed scan on frame '%s' at %.3f: %s; "
+                     "malformed scans dropped so far: %d\n",
+                     scan->header.frame_id.c_str(), scan->header.stamp.toSec(), problem->c_str(),
+                     malformed.total());
+      continue;
+    }
     const std::string frame = stripSlash(scan->header.frame_id);
     auto it = lasers.find(frame);
     if (it == lasers.end() || it->second.first != scan->ranges.size()) {
@@ -178,7 +205,9 @@ int main(int argc, char** argv) {
       continue;
     }
     if (!filter) {
-      rangeDefaults(&o.params, scan->range_max, o.max_range_set, o.max_urange_set);
+      const std::string note =
+          rangeDefaults(&o.params, scan->range_max, o.max_range_set, o.max_urange_set);
+      if (!note.empty()) std::fprintf(stderr, "slam_offline: %s\n", note.c_str());
       filter = std::make_unique<ParticleFilter>(o.params);
     }
     const Pose2 odom(odom_tf.transform.translation.x, odom_tf.transform.translation.y,
@@ -193,8 +222,10 @@ int main(int argc, char** argv) {
     rebuilds += r.map_rebuilt;
   }
   if (!filter) {
-    std::fprintf(stderr, "slam_offline: no scan could be placed (%d scans, %d without odometry)\n",
-                 scans, dropped);
+    std::fprintf(stderr,
+                 "slam_offline: no scan could be placed (%d scans, %d without odometry, %d "
+                 "malformed)\n",
+                 scans, dropped, malformed.total());
     return 1;
   }
   const Particle& best = filter->best();
@@ -227,10 +258,11 @@ int main(int argc, char** argv) {
   getrusage(RUSAGE_SELF, &usage);
   const double cpu = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
                      1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-  std::printf("slam_offline: %d scans (%d without odometry), %d updates, %zu tf messages; "
+  std::printf("slam_offline: %d scans (%d without odometry, %d malformed), %d updates, "
+              "%zu tf messages; "
               "%.1f s of data in %.2f s (%.1fx real time, cpu %.2f s); map %dx%d written to "
               "%s.pgm/.yaml; loop closures %d of %d tried (%d redrew the map)\n",
-              scans, dropped, filter->updates(), tf_count, duration, wall,
+              scans, dropped, malformed.total(), filter->updates(), tf_count, duration, wall,
               wall > 0 ? duration / wall : 0.0, cpu, occ.width, occ.height, o.out.c_str(), loops,
               loop_attempts, rebuilds);
   return 0;

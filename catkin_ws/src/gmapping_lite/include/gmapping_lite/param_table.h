@@ -35,8 +35,19 @@ bool setParam(SlamParams* params, const std::string& name, double value);
 // when all are usable. maxRange / maxUrange are checked only when set (see rangeDefaults).
 std::string paramProblem(const SlamParams& params, bool max_range_set, bool max_urange_set);
 
+// The largest range_max the defaults below take from a scan (m): 80 m, gmapping's old maxUrange
+// default, far beyond the book's lasers (the Turtlebot's Kinect scan reaches a few metres, the
+// simulator's 8 m, the PR2's base laser 30 m). A driver reporting 1e4, 1e30 or inf for "no
+// limit" would otherwise make every "no return" beam clear space out that far, and the grid
+// grown to hold it exhaust memory (1e30 m overflows the cell index; the node never finished
+// its first scan). Memory still grows with range: see README ("Lasers and bad input").
+constexpr double kMaxDefaultRange = 80.0;
+
 // gmapping's defaults from a scan: maxRange = range_max - 0.01 (so "no return" readings at
-// range_max clear space), maxUrange = maxRange, each only if not set explicitly.
-void rangeDefaults(SlamParams* params, double range_max, bool max_range_set, bool max_urange_set);
+// range_max clear space), maxUrange = maxRange, each only if not set explicitly. A range_max
+// above kMaxDefaultRange (or not finite) counts as kMaxDefaultRange; the return value then
+// says so in one line (empty otherwise), for the caller to warn once.
+std::string rangeDefaults(SlamParams* params, double range_max, bool max_range_set,
+                          bool max_urange_set);
 
 }  // namespace gmapping_lite

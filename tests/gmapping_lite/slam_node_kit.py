@@ -1,0 +1,76 @@
+"""Shared by the slam_gmapping node tests: start the node under sim time with the book's map
+bounds, drive the synthetic laser robot (synthetic_scans.py, which is the /clock), and read
+the published grid (cells, the synthetic room's walls and free space)."""
+
+import math
+from pathlib import Path
+
+from roskit import DEBIAN_PYTHON
+
+HERE = Path(__file__).resolve().parent
+ROBOT = [DEBIAN_PYTHON, str(HERE / "synthetic_scans.py")]
+BOOK_BOUNDS = {"xmin": -10, "xmax": 10, "ymin": -10, "ymax": 10}
+
+
+def start_slam(ros, **params):
+    ros.run(["rosparam", "set", "/use_sim_time", "true"])
+    params.setdefault("base_frame", "base_footprint")
+    for name, value in BOOK_BOUNDS.items():  # a 400 x 400 map instead of 4000 x 4000
+        params.setdefault(name, value)
+    for name, value in params.items():
+        ros.run(["rosparam", "set", f"/slam_gmapping/{name}", str(value)])
+    node = ros.start(["rosrun", "gmapping_lite", "slam_gmapping"], name="slam_gmapping")
+    ros.wait_for_topic("map_metadata")
+    return node
+
+
+def drive(ros, *options, timeout=120):
+    robot = ros.start(ROBOT + list(options), name="synthetic_scans")
+    robot.wait(timeout=timeout)
+    assert robot.returncode == 0, ros.output(robot)
+
+
+def record_drive(ros, bag, *options):
+    """Drive the robot (with `options`) while rosbag records its scans and tf into `bag`."""
+    topics = ["/scan", "/tf", "/tf_static"]
+    recorder = ros.start(["rosbag", "record", "-O", str(bag), *topics])
+
+    def subscribed():
+        subscribers = dict(ros.system_state()[1])
+        return all(any("record" in n for n in subscribers.get(t, [])) for t in topics)
+
+    ros.wait_for(subscribed, 60, "rosbag record to subscribe to " + ", ".join(topics))
+    drive(ros, *options)
+    ros.stop(recorder)
+    # rosbag's recording child closes (renames) the bag after the wrapper has exited.
+    ros.wait_for(lambda: Path(bag).exists(), 60, "the bag to be closed")
+
+
+def seconds(stamp):
+    """A recorded time (the probe records rospy.Time as {secs, nsecs}) in seconds."""
+    return stamp["secs"] + stamp["nsecs"] * 1e-9 if isinstance(stamp, dict) else stamp
+
+
+def cell(grid, x, y):
+    info = grid["info"]
+    i = int(math.floor((x - info["origin"]["position"]["x"]) / info["resolution"]))
+    j = int(math.floor((y - info["origin"]["position"]["y"]) / info["resolution"]))
+    return grid["data"][j * info["width"] + i]
+
+
+def near(grid, x, y, value, reach=0.1):
+    """True if some cell within `reach` of (x, y) holds `value`."""
+    steps = [k * 0.05 for k in range(-int(reach / 0.05), int(reach / 0.05) + 1)]
+    return any(cell(grid, x + dx, y + dy) == value for dx in steps for dy in steps)
+
+
+def assert_room_mapped(grid):
+    """The synthetic room: walls at x = +-4, y = +-3, a box at (1.5..2.1, 1.0..1.6)."""
+    for y in (-2.0, -1.0, 0.5, 2.0):
+        assert near(grid, -4.0, y, 100), f"west wall missing at y={y}"
+    for x in (-3.0, -1.0, 1.0, 3.0):
+        assert near(grid, x, 3.0, 100), f"north wall missing at x={x}"
+        assert near(grid, x, -3.0, 100), f"south wall missing at x={x}"
+    assert near(grid, 1.5, 1.3, 100), "box missing"
+    for x, y in ((0.5, 0.0), (-2.0, -1.5), (-2.5, 2.0), (3.0, -2.0)):
+        assert cell(grid, x, y) == 0, f"({x}, {y}) should be free"
