@@ -9,6 +9,7 @@ after another, forever. Ported to Python 3; waypoints fit the simulator's maze.
 and stops the robot."""
 
 import argparse
+import signal
 import sys
 import time
 
@@ -53,7 +54,10 @@ def main():
             sys.exit(f"patrol.py: {e}")
 
     # Ctrl-C is ours (KeyboardInterrupt), not rospy's: a cancel sent from rospy's shutdown
-    # hook can be lost with the connection, and the robot would drive on to the goal.
+    # hook can be lost with the connection, and the robot would drive on to the goal. The
+    # handler is set explicitly, as rospy's would be: a process started in the background
+    # by a non-interactive shell inherits SIGINT ignored.
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     rospy.init_node("patrol", disable_signals=True)
     client = actionlib.SimpleActionClient("move_base", MoveBaseAction)
     try:
