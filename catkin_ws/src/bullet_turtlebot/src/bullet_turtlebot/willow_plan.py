@@ -10,23 +10,30 @@ from pathlib import Path
 RESOLUTION = 0.1
 # A free spot near the plan's middle, where bench_simulator has always started.
 CENTRE_START = (27.0, 29.0, 0.0)
+# The plan is itself a map made by a robot: its grey pixels (205, occupancy 50/255 = 0.196,
+# map_saver's unknown) are space that robot never saw: courtyards, closed rooms, outdoors.
+# map_server's thresholds make them unknown, which the simulator turns into open floor;
+# an occupied_thresh just below 0.196 makes them walls instead, so a robot stays indoors.
+THRESHOLDS = {False: (0.65, 0.196), True: (0.19, 0.1)}
 
 
-def world_text(image, start=CENTRE_START, comment=None):
-    """The world YAML for the plan at `image`, the robot starting at `start` (x, y, yaw)."""
+def world_text(image, start=CENTRE_START, comment=None, unknown_is_wall=False):
+    """The world YAML for the plan at `image`, the robot starting at `start` (x, y, yaw);
+    the plan's unknown (grey) pixels are open floor, or walls with `unknown_is_wall`."""
     x, y, yaw = (float(v) for v in start)
+    occupied, free = THRESHOLDS[bool(unknown_is_wall)]
     head = "".join(f"# {line}\n" for line in comment.splitlines()) if comment else ""
     return (
         f"{head}image: {Path(image).resolve()}\nresolution: {RESOLUTION}\n"
-        "origin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n"
+        f"origin: [0, 0, 0]\nnegate: 0\noccupied_thresh: {occupied}\nfree_thresh: {free}\n"
         f"start: [{x!r}, {y!r}, {yaw!r}]\n"
     )
 
 
-def write_world(path, image, start=CENTRE_START, comment=None):
+def write_world(path, image, start=CENTRE_START, comment=None, unknown_is_wall=False):
     """Write the world file to `path`; returns the path, or None when `image` is absent."""
     if not Path(image).is_file():
         return None
     path = Path(path)
-    path.write_text(world_text(image, start, comment))
+    path.write_text(world_text(image, start, comment, unknown_is_wall))
     return path
