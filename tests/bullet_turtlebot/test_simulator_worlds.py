@@ -5,6 +5,7 @@ import math
 from pathlib import Path
 
 import pytest
+from bullet_turtlebot import willow_plan
 from simkit import last_pose, ranges, start_simulator, write_pgm, write_world
 
 WILLOW = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "willow-full.pgm"
@@ -104,7 +105,7 @@ def willow_world(tmp_path):
     lines = [line for line in data.split(b"\n")[:4] if not line.startswith(b"#")]
     width, height = map(int, lines[1].split())
     pixels = data[len(data) - width * height :]
-    resolution = 0.1
+    resolution = willow_plan.RESOLUTION
     clear = 6  # cells (0.6 m) of free space around the start
 
     def free(c, r):
@@ -121,11 +122,7 @@ def willow_world(tmp_path):
     col, row = next(cr for cr in cells if free(*cr))
     assert fields[0] == b"P5"
     x, y = (col + 0.5) * resolution, (height - row - 0.5) * resolution
-    path = tmp_path / "willow.yaml"
-    path.write_text(
-        f"image: {WILLOW}\nresolution: {resolution}\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
-        f"occupied_thresh: 0.65\nfree_thresh: 0.196\nstart: [{x}, {y}, 0.0]\n"
-    )
+    path = willow_plan.write_world(tmp_path / "willow.yaml", WILLOW, (x, y, 0.0))
     return path, x, y
 
 

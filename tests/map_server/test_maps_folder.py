@@ -25,11 +25,46 @@ def test_loads_without_warnings_and_is_documented(yaml_path):
     assert f"{omap.width} x {omap.height} cells" in readme
 
 
-def test_willow_is_the_office_map():
+def solid_squares(mask, side):
+    """How many side x side windows of `mask` are all True (a summed-area table)."""
+    table = np.pad(mask.astype(np.int64).cumsum(0).cumsum(1), ((1, 0), (1, 0)))
+    sums = table[side:, side:] - table[:-side, side:] - table[side:, :-side] + table[:-side, :-side]
+    return int(np.count_nonzero(sums == side * side))
+
+
+def axes_angle_deg(points, resolution):
+    """The rotation (0..90 degrees) that lines the most wall cells up along x and y: walls
+    along the axes pile their cells into few bins of a projection."""
+    best, best_angle = -1.0, 0
+    for angle in range(90):
+        a = np.radians(angle)
+        c, s = np.cos(a), np.sin(a)
+        score = 0.0
+        for proj in (c * points[:, 0] + s * points[:, 1], -s * points[:, 0] + c * points[:, 1]):
+            bins = np.floor(proj / resolution).astype(np.int64)
+            score += float(np.square(np.bincount(bins - bins.min())).sum())
+        if score > best:
+            best, best_angle = score, angle
+    return best_angle
+
+
+def test_willow_is_a_slam_map_like_the_books():
+    """Chapter 9's willow map: made by SLAM (free, occupied and unknown cells), not
+    axis-aligned, and with a big black blob painted over a room the robot must not enter."""
     willow = map_io.load_map(MAPS / "willow.yaml")
-    office = map_io.load_map(MAPS / "office.yaml")
-    np.testing.assert_array_equal(willow.data, office.data)
-    assert (willow.resolution, willow.origin) == (office.resolution, office.origin)
+    assert "make_willow_map" in (MAPS / "willow.yaml").read_text()
+    assert (MAPS / "willow.pgm").stat().st_size < 2_000_000
+    cells = willow.data.size
+    free, wall, unknown = ((willow.data == v).sum() / cells for v in (0, 100, -1))
+    assert free > 0.1 and wall > 0.01 and unknown > 0.1, (free, wall, unknown)
+    # The blob: walls a laser draws are a few cells thick; a painted room holds solid black
+    # squares 2 m on a side.
+    side = round(2.0 / willow.resolution)
+    assert solid_squares(willow.data == 100, side) > 0
+    # Not axis-aligned: the building's walls line up at an angle to the map's axes.
+    rows, cols = np.nonzero(willow.data == 100)
+    angle = axes_angle_deg(np.column_stack([cols, rows]) * willow.resolution, willow.resolution)
+    assert 5 <= angle <= 85, angle
 
 
 SHARED_WILLOW = REPO.parent / "shared" / "data" / "willow-full.pgm"

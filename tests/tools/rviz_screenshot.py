@@ -175,7 +175,9 @@ class RvizSession:
             env=self._xenv(),
             capture_output=True,
             text=True,
-            timeout=20,
+            # Xvfb serves rviz's software rendering too: on a loaded machine a large screen
+            # (the willow map's) took over 20 s to grab while rviz was starting.
+            timeout=60,
         )
         if done.returncode != 0:
             raise RvizError(f"import failed: {done.stderr.strip()}")
