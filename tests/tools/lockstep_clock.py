@@ -42,6 +42,7 @@ import os
 import sys
 import threading
 import time
+import warnings
 from pathlib import Path
 
 import rosgraph
@@ -191,6 +192,16 @@ class Lockstep:
             self.out.close()
 
 
+def input_publisher(topic, msg_class):
+    """A publisher for what on_tick injects. Synchronous (queue_size=None): publish() has
+    written the message to every subscriber's socket before the next tick's /clock goes
+    out, whereas a queued publisher's writer thread can fall ticks behind the clock's under
+    load, and the node would then take its inputs late."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # rospy warns about queue_size=None; it is meant
+        return rospy.Publisher(topic, msg_class, queue_size=None)
+
+
 class SimulatorLockstep(Lockstep):
     """The paused simulator is the clock: each tick calls its ~step service."""
 
@@ -264,7 +275,7 @@ def main():
         rest, _, echoes = rest.partition("/")
         text, at, _ = parse_at(rest)
         if topic not in publishers:
-            publishers[topic] = rospy.Publisher(topic, String, queue_size=100)
+            publishers[topic] = input_publisher(topic, String)
         says.setdefault(tick_of(at), []).append((publishers[topic], text, int(echoes or 0)))
     clock.inputs = list(publishers.values())
     typing = {}  # tick -> text

@@ -15,7 +15,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parent / "tools"))
 from fake_scan import N, ranges  # noqa: E402
-from lockstep_clock import Lockstep, LockstepError  # noqa: E402
+from lockstep_clock import Lockstep, LockstepError, input_publisher  # noqa: E402
 
 
 def main():
@@ -33,7 +33,7 @@ def main():
 
     rospy.init_node("lockstep_scans", disable_signals=True)
     clock = Lockstep("cmd_vel", args.period, out=args.out)
-    pub = rospy.Publisher("scan", LaserScan, queue_size=10)
+    pub = input_publisher("scan", LaserScan)  # written before the next tick goes out
     clock.inputs = [pub]
 
     def on_tick(tick):
