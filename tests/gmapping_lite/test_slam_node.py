@@ -25,6 +25,7 @@ from synthetic_scans import trajectory  # noqa: E402
 def test_book_parameters_map_latched_stamped_and_served(ros):
     start_slam(ros, linearUpdate=0.1, angularUpdate=0.1, lskip=10, map_update_interval=1.0)
     entropy = ros.probe(["/slam_gmapping/entropy"], count=3, ready=False, timeout=180)
+    diagnostics = ros.probe(["/diagnostics"], count=2, ready=False, timeout=180)
     drive(ros)
     # A subscriber arriving after the fact still gets the map: it is latched.
     grid = ros.echo("map")[0]["msg"]
@@ -45,6 +46,17 @@ def test_book_parameters_map_latched_stamped_and_served(ros):
     # The filter's weight entropy is published: at most log(30).
     values = [m["msg"]["data"] for m in entropy.wait(190)]
     assert values and all(0.0 <= v <= math.log(30) + 1e-9 for v in values)
+    # Scan counts on /diagnostics with each map: every scan received reaches the mapper
+    # (throttle_scans 1); those it could not get to in time are counted as skipped.
+    for message in diagnostics.wait(190):
+        (status,) = message["msg"]["status"]
+        assert status["name"] == "/slam_gmapping: scans"
+        counts = {kv["key"]: int(kv["value"]) for kv in status["values"]}
+        assert counts["scans received"] == counts["scans offered to the mapper"] > 0
+        assert 0 <= counts["scans skipped (fell behind)"] < counts["scans received"]
+        assert counts["updates"] > 0
+        behind = status["message"].startswith("falling behind")
+        assert status["level"] == (1 if behind else 0), status
 
 
 def test_map_to_odom_tf_is_stamped_ahead_of_the_scans(ros):

@@ -2,11 +2,16 @@
 //
 // Subscribes `scan`; reads odometry from tf (odom_frame -> base_frame at each scan's stamp)
 // and the laser's mounting (base_frame -> scan frame, once per frame and beam layout).
-// Publishes `map` and `map_metadata` (latched), `~entropy`, tf map_frame -> odom_frame, and
-// serves `dynamic_map`.
+// Publishes `map` and `map_metadata` (latched), `~entropy`, tf map_frame -> odom_frame,
+// `/diagnostics` (scan counts, with each map), and serves `dynamic_map`.
+//
+// Scans are mapped by a worker thread that always takes the newest scan: when updates take
+// longer than the scan period (a busy machine, a fast simulator) the scans it could not get
+// to are skipped and counted, never queued up stale.
 #include <ros/ros.h>
 
 #include <atomic>
+#include <cstdint>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -22,6 +27,7 @@
 #include <nav_msgs/OccupancyGrid.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/Float64.h>
+#include <diagnostic_msgs/DiagnosticArray.h>
 #include <tf2/LinearMath/Quaternion.h>
 #include <tf2/utils.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
@@ -29,6 +35,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
+#include "gmapping_lite/newest_slot.h"
 #include "gmapping_lite/occupancy.h"
 #include "gmapping_lite/param_table.h"
 #include "gmapping_lite/particle_filter.h"
@@ -70,7 +77,11 @@ class SlamGmappingNode {
     map_pub_ = node_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
     metadata_pub_ = node_.advertise<nav_msgs::MapMetaData>("map_metadata", 1, true);
     entropy_pub_ = private_.advertise<std_msgs::Float64>("entropy", 1, true);
+    diagnostics_pub_ = node_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
     map_service_ = node_.advertiseService("dynamic_map", &SlamGmappingNode::onMapRequest, this);
+    scan_thread_ = std::thread([this] {
+      while (auto scan = scans_.take()) processScan(scan->msg, scan->index);
+    });
     scan_sub_ = node_.subscribe("scan", 20, &SlamGmappingNode::onScan, this);
     if (transform_publish_period_ > 0.0)
       tf_thread_ = std::thread([this] { publishTransformLoop(); });
@@ -83,6 +94,8 @@ class SlamGmappingNode {
 
   ~SlamGmappingNode() {
     stopping_ = true;
+    scans_.close();
+    if (scan_thread_.joinable()) scan_thread_.join();
     if (tf_thread_.joinable()) tf_thread_.join();
   }
 
@@ -154,9 +167,26 @@ class SlamGmappingNode {
     return &lasers_[frame].geometry;
   }
 
+  // The subscriber's callback only hands the scan to the worker (processScan).
   void onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
-    ++scans_received_;
-    if ((scans_received_ - 1) % throttle_scans_ != 0) return;
+    const int received = ++scans_received_;
+    if ((received - 1) % throttle_scans_ != 0) return;
+    scans_.put({scan, received});
+  }
+
+  // `index`: the scan's number among those received (1 = the first), for the log.
+  void processScan(const sensor_msgs::LaserScan::ConstPtr& scan, int index) {
+    const std::uint64_t skipped = scans_.skipped();
+    if (skipped > skipped_reported_) {
+      ROS_WARN_THROTTLE(10.0,
+                        "slam_gmapping: falling behind the scans: %llu of %llu skipped so far "
+                        "(each mapped the newest); updates take longer than the scan period. "
+                        "A lower simulator speed, fewer particles or a higher throttle_scans "
+                        "lets it keep up",
+                        static_cast<unsigned long long>(skipped),
+                        static_cast<unsigned long long>(scans_.offered()));
+      skipped_reported_ = skipped;
+    }
     if (scan->header.stamp.isZero()) {
       ROS_WARN_THROTTLE(5.0, "slam_gmapping: ignoring a scan stamped 0 (is the publisher "
                              "waiting for /clock?)");
@@ -217,14 +247,46 @@ class SlamGmappingNode {
             : "";
     ROS_INFO("slam_gmapping: update %d (scan %d, t=%.2f): best pose (%.3f, %.3f, %.3f), "
              "Neff %.1f/%d%s, match score %.0f%s",
-             report.update_index, scans_received_, scan->header.stamp.toSec(),
+             report.update_index, index, scan->header.stamp.toSec(),
              report.best_pose.x, report.best_pose.y, report.best_pose.theta, report.neff,
              params_.particles, report.resampled ? ", resampled" : "", report.best_score,
              failed.c_str());
     if (!have_map_ || (scan->header.stamp - last_map_update_).toSec() >= map_update_interval_) {
       publishMap(scan->header.stamp);
+      publishDiagnostics(scan->header.stamp, report.update_index + 1);
       last_map_update_ = scan->header.stamp;
     }
+  }
+
+  // Scan counts on /diagnostics, with each map: WARN while scans are being skipped.
+  void publishDiagnostics(const ros::Time& stamp, int updates) {
+    const std::uint64_t offered = scans_.offered(), skipped = scans_.skipped();
+    diagnostic_msgs::DiagnosticStatus status;
+    status.name = ros::this_node::getName() + ": scans";
+    status.hardware_id = "none";
+    const std::uint64_t new_skips = skipped - skipped_at_last_diagnostics_;
+    skipped_at_last_diagnostics_ = skipped;
+    status.level = new_skips ? diagnostic_msgs::DiagnosticStatus::WARN
+                             : diagnostic_msgs::DiagnosticStatus::OK;
+    status.message = new_skips ? "falling behind: " + std::to_string(new_skips) +
+                                     " scans skipped since the last map"
+                               : "keeping up with the scans";
+    auto add = [&status](const std::string& key, std::uint64_t value) {
+      diagnostic_msgs::KeyValue kv;
+      kv.key = key;
+      kv.value = std::to_string(value);
+      status.values.push_back(kv);
+    };
+    add("scans received", static_cast<std::uint64_t>(scans_received_.load()));
+    add("scans offered to the mapper", offered);
+    add("scans skipped (fell behind)", skipped);
+    add("scans malformed", static_cast<std::uint64_t>(malformed_.total()));
+    add("scans without odometry", static_cast<std::uint64_t>(scans_dropped_));
+    add("updates", static_cast<std::uint64_t>(updates));
+    diagnostic_msgs::DiagnosticArray array;
+    array.header.stamp = stamp;
+    array.status.push_back(status);
+    diagnostics_pub_.publish(array);
   }
 
   void publishMap(const ros::Time& stamp) {
@@ -302,7 +364,7 @@ class SlamGmappingNode {
   ros::NodeHandle node_, private_;
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
-  ros::Publisher map_pub_, metadata_pub_, entropy_pub_;
+  ros::Publisher map_pub_, metadata_pub_, entropy_pub_, diagnostics_pub_;
   ros::ServiceServer map_service_;
   ros::Subscriber scan_sub_;
 
@@ -314,7 +376,15 @@ class SlamGmappingNode {
   bool max_range_set_ = false, max_urange_set_ = false;
   std::unique_ptr<ParticleFilter> filter_;
   std::map<std::string, LaserEntry> lasers_;
-  int scans_received_ = 0, scans_dropped_ = 0;
+  std::atomic<int> scans_received_{0};
+  int scans_dropped_ = 0;
+  struct ReceivedScan {
+    sensor_msgs::LaserScan::ConstPtr msg;
+    int index;
+  };
+  NewestSlot<ReceivedScan> scans_;
+  std::thread scan_thread_;
+  std::uint64_t skipped_reported_ = 0, skipped_at_last_diagnostics_ = 0;
   ScanDrops malformed_{5.0};  // warn at most every 5 s of scan time, each line with the count
 
   std::mutex tf_mutex_;

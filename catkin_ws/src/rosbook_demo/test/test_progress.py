@@ -1,6 +1,7 @@
 import math
 
-from rosbook_demo.progress import ProgressMeter
+from diagnostic_msgs.msg import DiagnosticStatus, KeyValue
+from rosbook_demo.progress import ProgressMeter, slam_scan_counts, slam_skip_warning
 
 
 def test_progress_line_reports_speedup_and_distance():
@@ -26,3 +27,23 @@ def test_speed_warning_only_when_clearly_below_the_speed_asked():
     assert (
         meter.speed_warning(sim_now=30.0, wall_now=10.0, asked=0.0) is None
     )  # as fast as possible
+
+
+def scans_status(name, **values):
+    keys = {"received": "scans received", "skipped": "scans skipped (fell behind)"}
+    return DiagnosticStatus(
+        name=name, values=[KeyValue(key=keys[k], value=str(v)) for k, v in values.items()]
+    )
+
+
+def test_slam_skip_warning_names_the_share_skipped_and_the_fix():
+    counts = slam_scan_counts(scans_status("/slam_gmapping: scans", received=400, skipped=100))
+    assert counts == {"scans received": 400, "scans skipped (fell behind)": 100}
+    warning = slam_skip_warning(counts)
+    assert "skipped 100 of 400 scans (25%)" in warning and "--speed" in warning
+    kept_up = slam_scan_counts(scans_status("/slam_gmapping: scans", received=400, skipped=0))
+    assert slam_skip_warning(kept_up) is None
+    assert slam_skip_warning(None) is None
+    # Other nodes' statuses, or a status without the counts, are not slam_gmapping's.
+    assert slam_scan_counts(scans_status("/other: motors", received=1, skipped=1)) is None
+    assert slam_scan_counts(scans_status("/slam_gmapping: scans", received=4)) is None

@@ -57,3 +57,34 @@ def known_area(grid):
     """Area (m²) of the cells of an OccupancyGrid that are not unknown (-1)."""
     known = sum(1 for v in grid.data if v != -1)
     return known * grid.info.resolution**2
+
+
+# slam_gmapping's scan counts on /diagnostics (its "<node>: scans" status).
+SLAM_SCANS_RECEIVED = "scans received"
+SLAM_SCANS_SKIPPED = "scans skipped (fell behind)"
+
+
+def slam_scan_counts(diagnostic_status):
+    """{key: int} from slam_gmapping's scans status (a diagnostic_msgs/DiagnosticStatus), or
+    None for any other status."""
+    if not diagnostic_status.name.endswith(": scans"):
+        return None
+    counts = {}
+    for kv in diagnostic_status.values:
+        try:
+            counts[kv.key] = int(kv.value)
+        except ValueError:
+            continue
+    return counts if SLAM_SCANS_RECEIVED in counts and SLAM_SCANS_SKIPPED in counts else None
+
+
+def slam_skip_warning(counts):
+    """A warning when slam_gmapping skipped scans because it fell behind (None otherwise):
+    it then mapped fewer scans than a run on the bag would, so the live map may be worse."""
+    if not counts or counts[SLAM_SCANS_SKIPPED] <= 0:
+        return None
+    skipped, received = counts[SLAM_SCANS_SKIPPED], max(counts[SLAM_SCANS_RECEIVED], 1)
+    return (
+        f"slam_gmapping fell behind and skipped {skipped} of {received} scans "
+        f"({skipped / received:.0%}); a lower --speed lets it map every scan"
+    )
