@@ -14,9 +14,11 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
+#include <cmath>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <sstream>
 
 #include "amcl_lite/particle_filter.h"
 
@@ -56,12 +58,27 @@ class AmclNode {
   }
 
  private:
+  // A private parameter, or `fallback` when it is not set. A value of the wrong type (a
+  // string where a number belongs, 0.5 where a count belongs) is refused, not replaced by
+  // the default without a word as NodeHandle::param would.
   template <typename T>
   T param(const std::string& name, T fallback) {
+    if (!pnh_.hasParam(name)) return fallback;
     T value;
-    pnh_.param(name, value, fallback);
+    if (!pnh_.getParam(name, value)) {
+      XmlRpc::XmlRpcValue raw;
+      pnh_.getParam(name, raw);
+      std::ostringstream shown;
+      shown << raw;
+      throw std::invalid_argument("parameter " + name + " = " + shown.str() +
+                                  " is invalid: it must be " + typeName(value));
+    }
     return value;
   }
+  static const char* typeName(double) { return "a number"; }
+  static const char* typeName(int) { return "a whole number"; }
+  static const char* typeName(bool) { return "true or false"; }
+  static const char* typeName(const std::string&) { return "a string"; }
 
   void readParameters() {
     p_.min_particles = param("min_particles", p_.min_particles);
@@ -143,11 +160,25 @@ class AmclNode {
       start.initial_pose_a = e.mean.yaw;
     }
     filter_ = std::make_unique<ParticleFilter>(start, field_, seed_);
+    if (!insideMap(map, start.initial_pose_x, start.initial_pose_y)) {
+      ROS_ERROR("amcl_lite: the initial pose (%g, %g) is outside the map (x %.2f to %.2f, y %.2f "
+                "to %.2f); spreading the particles over the map's free space instead (global "
+                "localization). Set ~initial_pose_x/y, or use rviz's 2D Pose Estimate",
+                start.initial_pose_x, start.initial_pose_y, map.origin_x,
+                map.origin_x + map.width * map.resolution, map.origin_y,
+                map.origin_y + map.height * map.resolution);
+      filter_->initGlobal();
+    }
     last_odom_.reset();
     force_update_ = true;
     ROS_INFO("amcl_lite: map %dx%d at %.3f m, %zu particles around (%.2f, %.2f, %.2f)", map.width,
              map.height, map.resolution, filter_->particles().size(), start.initial_pose_x,
              start.initial_pose_y, start.initial_pose_a);
+  }
+
+  static bool insideMap(const GridMap& map, double x, double y) {
+    return x >= map.origin_x && x <= map.origin_x + map.width * map.resolution &&
+           y >= map.origin_y && y <= map.origin_y + map.height * map.resolution;
   }
 
   void onInitialPose(const geometry_msgs::PoseWithCovarianceStampedConstPtr& msg) {
@@ -165,6 +196,16 @@ class AmclNode {
     const auto& c = msg->pose.covariance;
     const Pose2 pose(msg->pose.pose.position.x, msg->pose.pose.position.y,
                      tf2::getYaw(msg->pose.pose.orientation));
+    const bool finite_pose = std::isfinite(pose.x) && std::isfinite(pose.y) &&
+                             std::isfinite(pose.yaw);
+    const bool usable_cov = std::isfinite(c[0]) && std::isfinite(c[7]) && std::isfinite(c[35]) &&
+                            std::isfinite(c[1]) && c[0] >= 0 && c[7] >= 0 && c[35] >= 0;
+    if (!finite_pose || !usable_cov) {
+      ROS_WARN("amcl_lite: ignoring an initial pose that is not finite or whose covariance is "
+               "negative or not finite: (%g, %g, %g), variances %g %g %g",
+               pose.x, pose.y, pose.yaw, c[0], c[7], c[35]);
+      return;
+    }
     filter_->initGaussian(pose, c[0], c[7], c[35], c[1]);
     force_update_ = true;
     ROS_INFO("amcl_lite: initial pose (%.3f, %.3f, %.3f)", pose.x, pose.y, pose.yaw);
@@ -287,6 +328,9 @@ class AmclNode {
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "amcl");
+  // Holds ROS up while the node is built: when the node's own handles are destroyed by a
+  // refused parameter, ros::shutdown would otherwise silence rosconsole before ROS_FATAL.
+  ros::NodeHandle keep_ros_up;
   try {
     amcl_lite::AmclNode node;
     ros::spin();

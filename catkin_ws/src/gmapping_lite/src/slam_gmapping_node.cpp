@@ -57,13 +57,20 @@ class SlamGmappingNode {
     private_.param("transform_publish_period", transform_publish_period_, 0.05);
     private_.param("tf_wait", tf_wait_, 0.5);  // wall seconds to wait for odometry tf
     private_.param("tilt_tolerance", tilt_tolerance_, 0.1);
+    std::string problem;
     for (const auto& e : paramTable()) {
       double value;
-      if (private_.getParam(e.name, value)) e.set(&params_, value);
+      if (private_.getParam(e.name, value)) {
+        e.set(&params_, value);
+      } else if (problem.empty() && private_.hasParam(e.name)) {
+        std::string text;  // set, but not a number (e.g. _delta:=abc)
+        private_.getParam(e.name, text);
+        problem = std::string(e.name) + " is '" + text + "': it must be a number";
+      }
     }
     max_range_set_ = private_.hasParam("maxRange");
     max_urange_set_ = private_.hasParam("maxUrange");
-    std::string problem = paramProblem(params_, max_range_set_, max_urange_set_);
+    if (problem.empty()) problem = paramProblem(params_, max_range_set_, max_urange_set_);
     if (problem.empty() && throttle_scans_ < 1) problem = "throttle_scans must be 1 or more";
     if (problem.empty() && !(map_update_interval_ > 0.0 && std::isfinite(map_update_interval_)))
       problem = "map_update_interval must be a number of seconds above 0";

@@ -41,10 +41,20 @@ def goal_pose(pose):
     return goal_pose
 
 
+def loop_count(text):
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"{text!r} must be 0 (patrol until Ctrl-C) or more")
+    return value
+
+
 def main():
     parser = argparse.ArgumentParser(description="Patrol waypoints with move_base.")
     parser.add_argument("--waypoints", help="YAML file of {x, y, yaw} waypoints (map frame)")
-    parser.add_argument("--loops", type=int, default=0, help="loops to run (0: until Ctrl-C)")
+    parser.add_argument("--loops", type=loop_count, default=0, help="loops to run (0: until Ctrl-C)")
     args = parser.parse_args(rospy.myargv()[1:])
     poses = waypoints
     if args.waypoints:
