@@ -184,15 +184,17 @@ class SlamGmappingNode {
   // `index`: the scan's number among those received (1 = the first), for the log.
   void processScan(const sensor_msgs::LaserScan::ConstPtr& scan, int index) {
     const std::uint64_t skipped = scans_.skipped();
-    if (skipped > skipped_reported_) {
-      ROS_WARN_THROTTLE(10.0,
-                        "slam_gmapping: falling behind the scans: %llu of %llu skipped so far "
-                        "(each mapped the newest); updates take longer than the scan period. "
-                        "A lower simulator speed, fewer particles or a higher throttle_scans "
-                        "lets it keep up",
-                        static_cast<unsigned long long>(skipped),
-                        static_cast<unsigned long long>(scans_.offered()));
+    // At most one line every 30 wall seconds: a fast simulator runs many scan periods a
+    // second, and the count in each line says how it went since.
+    const ros::WallTime wall_now = ros::WallTime::now();
+    if (skipped > skipped_reported_ && (skipped_reported_ == 0 || wall_now >= next_skip_warning_)) {
+      ROS_WARN("slam_gmapping: falling behind the scans: %llu of %llu skipped so far (each "
+               "mapped the newest); updates take longer than the scan period. A lower "
+               "simulator speed, fewer particles or a higher throttle_scans lets it keep up",
+               static_cast<unsigned long long>(skipped),
+               static_cast<unsigned long long>(scans_.offered()));
       skipped_reported_ = skipped;
+      next_skip_warning_ = wall_now + ros::WallDuration(30.0);
     }
     if (scan->header.stamp.isZero()) {
       ROS_WARN_THROTTLE(5.0, "slam_gmapping: ignoring a scan stamped 0 (is the publisher "
@@ -392,6 +394,7 @@ class SlamGmappingNode {
   NewestSlot<ReceivedScan> scans_;
   std::thread scan_thread_;
   std::uint64_t skipped_reported_ = 0, skipped_at_last_diagnostics_ = 0;
+  ros::WallTime next_skip_warning_;
   ScanDrops malformed_{5.0};  // warn at most every 5 s of scan time, each line with the count
 
   std::mutex tf_mutex_;
