@@ -87,7 +87,7 @@ class SlamGmappingNode {
     diagnostics_pub_ = node_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
     map_service_ = node_.advertiseService("dynamic_map", &SlamGmappingNode::onMapRequest, this);
     scan_thread_ = std::thread([this] {
-      while (auto scan = scans_.take()) processScan(scan->msg, scan->index);
+      while (auto scan = scans_.take()) processScan(*scan);
     });
     scan_sub_ = node_.subscribe("scan", 20, &SlamGmappingNode::onScan, this);
     if (transform_publish_period_ > 0.0)
@@ -178,11 +178,13 @@ class SlamGmappingNode {
   void onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
     const int received = ++scans_received_;
     if ((received - 1) % throttle_scans_ != 0) return;
-    scans_.put({scan, received});
+    scans_.put(scan);
   }
 
-  // `index`: the scan's number among those received (1 = the first), for the log.
-  void processScan(const sensor_msgs::LaserScan::ConstPtr& scan, int index) {
+  void processScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
+    // The scan's number among those the mapper took (1 = the first): in the log, a gap
+    // between two updates' numbers that is shorter than their time apart shows skipped scans.
+    const int index = ++scans_taken_;
     const std::uint64_t skipped = scans_.skipped();
     // At most one line every 30 wall seconds: a fast simulator runs many scan periods a
     // second, and the count in each line says how it went since.
@@ -387,11 +389,8 @@ class SlamGmappingNode {
   std::map<std::string, LaserEntry> lasers_;
   std::atomic<int> scans_received_{0};
   int scans_dropped_ = 0;
-  struct ReceivedScan {
-    sensor_msgs::LaserScan::ConstPtr msg;
-    int index;
-  };
-  NewestSlot<ReceivedScan> scans_;
+  NewestSlot<sensor_msgs::LaserScan::ConstPtr> scans_;
+  int scans_taken_ = 0;  // by the worker thread only
   std::thread scan_thread_;
   std::uint64_t skipped_reported_ = 0, skipped_at_last_diagnostics_ = 0;
   ros::WallTime next_skip_warning_;
