@@ -32,6 +32,7 @@ FAST_INTEGRATION = (
     "tests/bullet_turtlebot/test_simulator_launch.py::test_turtlebot_in_stage_launch_brings_up_the_maze",
     "tests/map_server/test_map_server.py::test_books_command_from_maps_folder",
     "tests/launch/test_launch_files.py::test_the_table_names_every_launch_file",
+    "tests/rosbook_eval/test_same_figures.py",
     "tests/launch/test_launch_files.py::test_launch_file_brings_up_its_nodes[catkin_ws/src/rosbook_demo/launch/mapping_live.launch]",
 )
 

@@ -4,6 +4,9 @@ chapter 9 set-up end to end. The robot drives a short corridor route; the SLAM p
 
 import math
 
+from map_server.map_io import quaternion_to_yaw
+from rosbook_eval.poses import compose, inverse
+
 TURTLEBOT = {
     "base_frame": "base_footprint",
     "maxUrange": 6.0,
@@ -23,12 +26,7 @@ TURTLEBOT = {
 
 
 def yaw(q):
-    return math.atan2(2 * (q["w"] * q["z"] + q["x"] * q["y"]), 1 - 2 * (q["y"] ** 2 + q["z"] ** 2))
-
-
-def compose(a, b):
-    c, s = math.cos(a[2]), math.sin(a[2])
-    return (a[0] + c * b[0] - s * b[1], a[1] + s * b[0] + c * b[1], a[2] + b[2])
+    return quaternion_to_yaw(q["x"], q["y"], q["z"], q["w"])
 
 
 def latest(transforms, parent, child):
@@ -68,9 +66,8 @@ def test_live_mapping_in_the_office_tracks_the_true_pose(ros):
     slam_pose = compose(map_to_odom, odom_to_base)
     # The map frame starts at the robot's start pose (odometry's origin): compare there.
     s0 = (start["position"]["x"], start["position"]["y"], yaw(start["orientation"]))
-    c, s = math.cos(s0[2]), math.sin(s0[2])
-    dx, dy = truth["position"]["x"] - s0[0], truth["position"]["y"] - s0[1]
-    true_rel = (c * dx + s * dy, -s * dx + c * dy)
+    true_pose = (truth["position"]["x"], truth["position"]["y"], yaw(truth["orientation"]))
+    true_rel = compose(inverse(s0), true_pose)
     error = math.hypot(slam_pose[0] - true_rel[0], slam_pose[1] - true_rel[1])
     assert error < 0.15, (slam_pose, true_rel)
     grid = ros.echo("map")[0]["msg"]

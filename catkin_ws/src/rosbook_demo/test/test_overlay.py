@@ -2,7 +2,6 @@ import math
 
 import matplotlib.image
 import numpy as np
-from rosbook_demo.grids import sample
 from rosbook_demo.overlay import (
     NOTHING,
     SLAM_FREE,
@@ -13,6 +12,7 @@ from rosbook_demo.overlay import (
     layers,
     shrink,
 )
+from rosbook_eval.grids import sample
 
 
 def runs(line):

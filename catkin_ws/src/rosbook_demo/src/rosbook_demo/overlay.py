@@ -1,6 +1,6 @@
 """Draw a SLAM map over the world's ground truth, with the true, odometry and SLAM paths.
 
-Maps are grids as in rosbook_demo.grids; everything is drawn in the world frame.
+Maps are grids as in rosbook_eval.grids; everything is drawn in the world frame.
 
 The picture must show every wall, even a SLAM wall one cell thick on a world larger than
 the figure has pixels. So it is built in two steps: first sampled finely enough that every
@@ -17,8 +17,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-
-from rosbook_demo.grids import OCCUPIED, cell_centres, corners, sample  # noqa: E402
+from rosbook_eval.grids import OCCUPIED, cell_centres, corners, sample  # noqa: E402
 
 # Classes of a picture pixel, in order of importance (shrink keeps the largest).
 NOTHING, SLAM_FREE, TRUE_WALL, SLAM_WALL = 0, 1, 2, 3

@@ -1,0 +1,21 @@
+"""score_slam's own part: the tuning it hands slam_offline (its figures come from rosbook_eval,
+tested there and in tests/rosbook_eval)."""
+
+import importlib.util
+from pathlib import Path
+
+
+def test_score_slam_starts_from_the_turtlebot_launch_files_tuning():
+    from importlib.machinery import SourceFileLoader
+
+    script = Path(__file__).resolve().parent.parent / "scripts" / "score_slam"
+    loader = SourceFileLoader("score_slam", str(script))
+    score_slam = importlib.util.module_from_spec(
+        importlib.util.spec_from_loader(loader.name, loader)
+    )
+    loader.exec_module(score_slam)
+    tuning = dict(p.split("=", 1) for p in score_slam.turtlebot_tuning())
+    assert tuning["srr"] == "0.01" and tuning["stt"] == "0.02"
+    assert tuning["linearUpdate"] == "0.5" and tuning["angularUpdate"] == "0.436"
+    assert tuning["maxUrange"] == "6.0" and tuning["minimumScore"] == "200"
+    assert not {"particles", "base_frame", "odom_frame", "map_update_interval"} & set(tuning)
