@@ -7,11 +7,14 @@ import pty
 import sys
 import xmlrpc.client
 from pathlib import Path
+from urllib.parse import urlparse
 
 import pytest
 
 REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(REPO / "tests"))
+sys.path.insert(0, str(REPO / "tests" / "tools"))
+from listening import tcp_listening_ports, udp_ports  # noqa: E402
 
 # launch file (relative to the repository) -> (arguments, needs a display, reads keys from a
 # terminal: then it gets a pseudo-terminal as stdin)
@@ -159,3 +162,23 @@ def test_launch_file_brings_up_its_nodes(ros, tmp_path, request, launch_file):
 
     ros.wait_for(all_up, timeout=120, what=f"{sorted(expected)} to register", interval=0.5)
     assert "has died" not in ros.output(launch), ros.output(launch)[-4000:]
+    for node in sorted(expected):
+        assert_only_ros_ports(uri, node)
+
+
+def assert_only_ros_ports(master_uri, node):
+    """The node listens on ROS's own ports only: its XML-RPC server (the URI it registered)
+    and its TCPROS server (where it offers /rosout, as every node publishes it), and binds at
+    most one UDP port (roscpp's UDPROS socket, opened by every C++ node). The README's
+    "Ports" section says so."""
+    caller = "/launch_test"
+    code, message, node_uri = xmlrpc.client.ServerProxy(master_uri).lookupNode(caller, node)
+    assert code == 1, message
+    api = xmlrpc.client.ServerProxy(node_uri)
+    code, message, pid = api.getPid(caller)
+    assert code == 1, message
+    code, message, protocol = api.requestTopic(caller, "/rosout", [["TCPROS"]])
+    assert code == 1 and protocol[0] == "TCPROS", (node, message)
+    ros_ports = {urlparse(node_uri).port, protocol[2]}
+    assert tcp_listening_ports(pid) <= ros_ports, (node, tcp_listening_ports(pid), ros_ports)
+    assert len(udp_ports(pid)) <= 1, (node, udp_ports(pid))
