@@ -54,7 +54,9 @@ def loop_count(text):
 def main():
     parser = argparse.ArgumentParser(description="Patrol waypoints with move_base.")
     parser.add_argument("--waypoints", help="YAML file of {x, y, yaw} waypoints (map frame)")
-    parser.add_argument("--loops", type=loop_count, default=0, help="loops to run (0: until Ctrl-C)")
+    parser.add_argument(
+        "--loops", type=loop_count, default=0, help="loops to run (0: until Ctrl-C)"
+    )
     args = parser.parse_args(rospy.myargv()[1:])
     poses = waypoints
     if args.waypoints:
