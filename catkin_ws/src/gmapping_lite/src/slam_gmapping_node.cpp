@@ -5,6 +5,7 @@
 // Publishes `map` and `map_metadata` (latched), `~entropy`, tf map_frame -> odom_frame, and
 // serves `dynamic_map`.
 #include <ros/ros.h>
+#include <rosbook_env/master_watch.h>
 
 #include <atomic>
 #include <cmath>
@@ -343,6 +344,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", e.what());
     return 2;
   }
+  const rosbook_env::MasterWatch master_watch;  // re-registers with a restarted roscore
   // Two threads: the service and the scan callback must not block each other for long.
   ros::AsyncSpinner spinner(2);
   spinner.start();
