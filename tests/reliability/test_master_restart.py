@@ -151,3 +151,49 @@ def test_simulator_registers_again_with_a_new_master(ros):
     assert master.getParam("/roskit", "/use_sim_time")[2] is True
     assert master.getParam("/roskit", "/simulator/world")[2] == "playground"
     assert_registered_again_once(ros, sim)
+
+
+def test_live_mapping_goes_on_across_a_master_restart(ros):
+    """The chapter 9 set-up (simulator and slam_gmapping, both C++) keeps mapping, and
+    map_saver started against the new master saves the map."""
+    ros.start(
+        ["roslaunch", "bullet_turtlebot", "simulator.launch", "world:=playground", "speed:=2"],
+        name="simulator",
+    )
+    ros.wait_for_topic("scan", timeout=TIMEOUT)
+    # A 20 m square map (the default is 200 m: 16 MB a message) around the playground.
+    params = {"base_frame": "base_footprint", "map_update_interval": 1.0}
+    params.update({"xmin": -10, "xmax": 10, "ymin": -10, "ymax": 10})
+    for name, value in params.items():
+        ros.run(["rosparam", "set", f"/slam_gmapping/{name}", str(value)])
+    slam = ros.start(
+        ["stdbuf", "-oL", "rosrun", "gmapping_lite", "slam_gmapping"], name="slam_gmapping"
+    )
+    before = ros.echo("map", timeout=TIMEOUT)[0]["msg"]["header"]["stamp"]
+
+    restart_master(ros)
+    wait_registered(ros, 0, "/map", "/slam_gmapping")
+    wait_registered(ros, 1, "/scan", "/slam_gmapping")
+    wait_registered(ros, 2, "/dynamic_map", "/slam_gmapping")
+    wait_registered(ros, 0, "/scan", "/simulator")
+    ros.wait_for(
+        lambda: ros.master().getParam(CALLER_ID, "/use_sim_time")[2] is True,
+        TIMEOUT,
+        "/use_sim_time put back by the nodes on sim time",
+    )
+    # Turning makes slam_gmapping process scans, so its map updates go on.
+    ros.start(
+        ["rostopic", "pub", "-r", "10", "/cmd_vel_mux/input/teleop", "geometry_msgs/Twist"]
+        + ["angular: {z: 0.8}"],
+        name="turn",
+    )
+    maps = ros.probe(["/map"], ready=False, types={"/map": "nav_msgs/OccupancyGrid"})
+    ros.wait_for(
+        lambda: any(m["msg"]["header"]["stamp"] > before for m in maps.messages()),
+        TIMEOUT,
+        "a map made after the restart",
+    )
+    saved = ros.run(["rosrun", "map_server", "map_saver", "-f", "after_restart"], timeout=90)
+    assert (ros.workdir / "after_restart.pgm").exists(), saved.stdout + saved.stderr
+    assert (ros.workdir / "after_restart.yaml").exists()
+    assert_registered_again_once(ros, slam)
