@@ -179,7 +179,7 @@ def test_live_mapping_goes_on_across_a_master_restart(ros):
     ros.wait_for(
         lambda: ros.master().getParam(CALLER_ID, "/use_sim_time")[2] is True,
         TIMEOUT,
-        "/use_sim_time put back by the nodes on sim time",
+        "/use_sim_time put back by the simulator (the clock)",
     )
     # Turning makes slam_gmapping process scans, so its map updates go on.
     ros.start(

@@ -89,7 +89,7 @@ struct MasterWatch::State {
   bool master_identity(std::string* identity) const;
   void snapshot();
   bool register_all();
-  std::string restore_params();
+  std::string restore_params(bool publishes_clock);
 
   const double poll;
   std::string identity;
@@ -256,15 +256,19 @@ bool MasterWatch::State::register_all() {
     ok = registered && ok;
     registered_services += registered ? 1 : 0;
   }
-  const std::string restored = restore_params();
+  bool publishes_clock = false;
+  for (const auto& topic : publications) publishes_clock = publishes_clock || topic.first == "/clock";
+  const std::string restored = restore_params(publishes_clock);
   ROS_INFO("master_watch: new master at %s: registered %zu publishers, %zu subscribers, %d services again%s",
            ros::master::getURI().c_str(), publications.size(), subscriptions.size(), registered_services,
            restored.empty() ? "" : ("; restored " + restored).c_str());
   return ok;
 }
 
-// Put back what a launch had set for this node, only where the new master has nothing.
-std::string MasterWatch::State::restore_params() {
+// Put back what a launch had set for this node, only where the new master has nothing: its
+// private parameters, and /use_sim_time if the node is the clock (a node that only runs on
+// sim time does not: it may be the one waiting for a /clock that is gone).
+std::string MasterWatch::State::restore_params(bool publishes_clock) {
   std::string restored;
   auto restore = [&restored](const std::string& name, const XmlRpcValue& value) {
     XmlRpcValue args = caller_args(), present, ignored;
@@ -276,7 +280,7 @@ std::string MasterWatch::State::restore_params() {
     if (master_call("setParam", args, &ignored)) restored += (restored.empty() ? "" : ", ") + name;
   };
   if (have_private_params) restore(ros::this_node::getName(), private_params);
-  if (ros::Time::isSimTime()) restore("/use_sim_time", XmlRpcValue(true));
+  if (publishes_clock && ros::Time::isSimTime()) restore("/use_sim_time", XmlRpcValue(true));
   return restored;
 }
 

@@ -10,8 +10,8 @@ the master for its pid and `/run_id` once a wall second (two small XML-RPC calls
 they change, or the master answers again after being unreachable, it registers every
 publisher, subscriber and service of the node again, with the node's own XML-RPC URI, tells
 the node's subscribers about the publishers the new master already knows, and puts back the
-node's private parameters (as they were when the watch started) and `/use_sim_time` when the
-node runs on sim time. Nothing else changes while the master stays the same.
+node's private parameters (as they were when the watch started) and, if the node publishes
+`/clock`, `/use_sim_time`. Nothing else changes while the master stays the same.
 """
 
 import http.client
@@ -133,7 +133,7 @@ class _MasterWatch:
             if rospy.core.is_shutdown_requested():
                 return
             master.registerService(self.caller_id, name, service_uri, self.node_uri)
-        restored = self.restore_params(master)
+        restored = self.restore_params(master, publishes_clock=any(n == "/clock" for n, _ in pubs))
         rospy.loginfo(
             "master_watch: new master at %s: registered %d publishers, %d subscribers, "
             "%d services again%s",
@@ -144,15 +144,17 @@ class _MasterWatch:
             "; restored " + ", ".join(restored) if restored else "",
         )
 
-    def restore_params(self, master):
-        """Put back what a launch had set for this node, only where the new master has nothing."""
+    def restore_params(self, master, publishes_clock):
+        """Put back what a launch had set for this node, only where the new master has nothing:
+        its private parameters, and /use_sim_time if the node is the clock (a node that only
+        runs on sim time does not: it may be the one waiting for a /clock that is gone)."""
         restored = []
         if self.private_params is not None:
             code, _, present = master.hasParam(self.caller_id, self.private_ns)
             if code == 1 and not present:
                 master.setParam(self.caller_id, self.private_ns, self.private_params)
                 restored.append(self.private_ns)
-        if not rospy.rostime.is_wallclock():
+        if publishes_clock and not rospy.rostime.is_wallclock():
             code, _, present = master.hasParam(self.caller_id, "/use_sim_time")
             if code == 1 and not present:
                 master.setParam(self.caller_id, "/use_sim_time", True)
