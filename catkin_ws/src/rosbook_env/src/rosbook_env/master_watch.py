@@ -110,8 +110,10 @@ class _MasterWatch:
     def register_all(self):
         topics = rospy.impl.registration.get_topic_manager()
         services = rospy.impl.registration.get_service_manager()
-        pubs = topics.get_publications() if topics else []
-        subs = topics.get_subscriptions() if topics else []
+        pubs, subs = [], []
+        if topics is not None:
+            with topics.lock:  # as rospy's RegManager does: no change while the lists are read
+                pubs, subs = topics.get_publications(), topics.get_subscriptions()
         srvs = services.get_services() if services else []
         master = _proxy(self.master_uri)
         node = _proxy(self.node_uri)
