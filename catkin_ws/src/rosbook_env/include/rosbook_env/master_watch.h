@@ -3,8 +3,8 @@
 // ROS 1 nodes outlive their master, but roscpp registers its publishers, subscribers and
 // services only once: a new master knows none of them. Construct one MasterWatch in main()
 // after the node has advertised and subscribed; a thread of its own asks the master for
-// its pid and /run_id once a wall second and, when they change (or the master answers
-// again after being unreachable), registers everything again (see master_watch.cpp).
+// its pid and /run_id once a wall second and, when they change (a new master; the same
+// one answering late changes nothing), registers everything again (see master_watch.cpp).
 #ifndef ROSBOOK_ENV_MASTER_WATCH_H
 #define ROSBOOK_ENV_MASTER_WATCH_H
 

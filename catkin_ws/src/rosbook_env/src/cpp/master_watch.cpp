@@ -166,7 +166,6 @@ void MasterWatch::State::snapshot() {
 }
 
 void MasterWatch::run(std::shared_ptr<State> state) {
-  bool lost = false;
   bool warned = false;
   std::unique_lock<std::mutex> lock(state->mutex);
   const auto period = std::chrono::duration<double>(state->poll);
@@ -177,11 +176,11 @@ void MasterWatch::run(std::shared_ptr<State> state) {
       std::string identity;
       if (ros::isShuttingDown()) {
       } else if (!state->master_identity(&identity)) {
-        lost = true;
-      } else if (identity != state->identity || lost) {
+        // No master now: wait for one. Only a new master (pid, run_id) is acted on.
+      } else if (identity != state->identity) {
         if (state->register_all()) {
           state->identity = identity;
-          lost = warned = false;
+          warned = false;
         } else if (!warned) {
           ROS_WARN("master_watch: could not register everything with the new master yet; trying again every %g s",
                    state->poll);

@@ -7,7 +7,7 @@ before the restart go on working, peer to peer).
 
 Nodes call `survive_master_restart()` once, after `rospy.init_node()`. A daemon thread asks
 the master for its pid and `/run_id` once a wall second (two small XML-RPC calls); when
-they change, or the master answers again after being unreachable, it registers every
+they change (a new master; the same one answering late changes nothing), it registers every
 publisher, subscriber and service of the node again, with the node's own XML-RPC URI, tells
 the node's subscribers about the publishers the new master already knows, and puts back the
 node's private parameters (as they were when the watch started) and, if the node publishes
@@ -84,18 +84,17 @@ class _MasterWatch:
             pass  # nothing to put back later
 
     def run(self, poll, stop):
-        lost = warned = False
+        warned = False
         # Waiting on wall time: the master's presence is what is polled, not ROS time.
         while not stop.wait(poll) and not rospy.core.is_shutdown_requested():
             try:
                 identity = self.master_identity()
-                if identity is None:
-                    lost = True
-                    continue
-                if identity == self.identity and not lost:
+                # Only a new master (its pid and run_id) is acted on: the same master slow to
+                # answer (a loaded machine) or unreachable for a while still knows the node.
+                if identity is None or identity == self.identity:
                     continue
                 self.register_all()
-                self.identity, lost, warned = identity, False, False
+                self.identity, warned = identity, False
             except Exception as err:  # the watch must never take the node down
                 if not warned:
                     rospy.logwarn(
