@@ -182,13 +182,16 @@ class RosGraph:
         self.wait_for(lambda: service in self.services(), timeout, f"service {service}")
 
     # -- topics --------------------------------------------------------------------
-    def probe(self, topics, count=None, duration=None, timeout=30, name=None, ready=True):
+    def probe(
+        self, topics, count=None, duration=None, timeout=30, name=None, ready=True, types=None
+    ):
         """Start recording `topics` (list of names) in a subprocess; returns a Probe.
 
         With ready=True, wait until the probe is connected to every topic's publisher
-        (so the publishers must exist); with ready=False, return at once.
+        (so the publishers must exist); with ready=False, return at once. `types`
+        ({topic: "pkg/Msg"}) subscribes at once, before any publisher is known.
         """
-        probe = Probe(self, topics, count, duration, timeout, name)
+        probe = Probe(self, topics, count, duration, timeout, name, types or {})
         if ready:
             probe.wait_ready()
         return probe
@@ -202,7 +205,7 @@ class RosGraph:
 class Probe:
     """Records messages as JSON lines: {"topic", "wall", "ros", "msg"}."""
 
-    def __init__(self, graph, topics, count, duration, timeout, name):
+    def __init__(self, graph, topics, count, duration, timeout, name, types):
         self.graph = graph
         self.out = graph.workdir / f"probe-{graph._log_index + 1:02d}.jsonl"
         cmd = [DEBIAN_PYTHON, str(PROBE), "--out", str(self.out), "--timeout", str(timeout)]
@@ -212,6 +215,7 @@ class Probe:
             cmd += ["--duration", str(duration)]
         if name:
             cmd += ["--name", name]
+        cmd += [f"--type={topic}={msg_type}" for topic, msg_type in types.items()]
         self.proc = graph.start(cmd + list(topics), name="probe")
         self.timeout = timeout
 

@@ -15,6 +15,7 @@ import time
 from pathlib import Path
 
 import genpy
+import roslib.message
 import rospy
 import rostopic
 
@@ -41,6 +42,13 @@ def main():
     parser.add_argument("--duration", type=float, help="stop after this many wall seconds")
     parser.add_argument("--timeout", type=float, default=30.0)
     parser.add_argument("--name", default="topic_probe")
+    parser.add_argument(
+        "--type",
+        action="append",
+        default=[],
+        metavar="TOPIC=PKG/MSG",
+        help="subscribe with this type instead of waiting for a publisher to tell it",
+    )
     parser.add_argument("topics", nargs="+")
     args = parser.parse_args(rospy.myargv()[1:])
 
@@ -66,12 +74,15 @@ def main():
             if args.count is not None and all(c >= args.count for c in counts.values()):
                 done.set()
 
+    given = dict(item.split("=", 1) for item in args.type)
     deadline = time.monotonic() + args.timeout
     subscribers = []
     for topic in args.topics:
         # get_topic_class matches the master's list literally: resolve relative names.
         resolved = rospy.resolve_name(topic)
-        msg_class = None
+        msg_class, real_topic = None, resolved
+        if topic in given:
+            msg_class = roslib.message.get_message_class(given[topic])
         while msg_class is None:
             msg_class, real_topic, _ = rostopic.get_topic_class(resolved, blocking=False)
             if msg_class is None:

@@ -6,6 +6,7 @@
 #include <nav_msgs/GetMap.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <ros/ros.h>
+#include <rosbook_env/master_watch.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_srvs/Empty.h>
 #include <tf2/LinearMath/Quaternion.h>
@@ -333,6 +334,7 @@ int main(int argc, char** argv) {
   ros::NodeHandle keep_ros_up;
   try {
     amcl_lite::AmclNode node;
+    const rosbook_env::MasterWatch master_watch;  // re-registers with a restarted roscore
     ros::spin();
   } catch (const std::invalid_argument& e) {
     ROS_FATAL("amcl_lite: %s", e.what());

@@ -3,11 +3,13 @@
 
 import rospy
 from basics.doubling import double_int32
+from rosbook_env.master_watch import survive_master_restart
 from std_msgs.msg import Int32
 
 
 def main():
     rospy.init_node("doubler")
+    survive_master_restart()  # re-registers with a restarted roscore
     # Advertise before subscribing: the book's order lets the callback run before pub exists.
     pub = rospy.Publisher("doubled", Int32, queue_size=10)
 

@@ -12,12 +12,14 @@ import actionlib
 import rospy
 from basics import timer
 from basics.msg import TimerAction, TimerFeedback, TimerResult
+from rosbook_env.master_watch import survive_master_restart
 
 POLL = 0.01  # seconds between preemption checks while waiting for the next feedback
 
 
 def main():
     rospy.init_node("timer_action_server")
+    survive_master_restart()  # re-registers with a restarted roscore
 
     def result_of(elapsed, updates):
         result = TimerResult()

@@ -9,11 +9,13 @@ Parameters: ~count (int, default 1) messages "latched message N of COUNT", 0.1 s
 """
 
 import rospy
+from rosbook_env.master_watch import survive_master_restart
 from std_msgs.msg import String
 
 
 def main():
     rospy.init_node("latched_publisher")
+    survive_master_restart()  # re-registers with a restarted roscore
     count = rospy.get_param("~count", 1)
     if isinstance(count, bool) or not isinstance(count, int) or count < 1:
         rospy.logfatal("~count must be a positive integer, got %r", count)

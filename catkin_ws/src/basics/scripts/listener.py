@@ -2,6 +2,7 @@
 """listener: logs every string that arrives on `chatter` (chapter 2)."""
 
 import rospy
+from rosbook_env.master_watch import survive_master_restart
 from std_msgs.msg import String
 
 
@@ -11,6 +12,7 @@ def callback(msg):
 
 def main():
     rospy.init_node("listener")
+    survive_master_restart()  # re-registers with a restarted roscore
     rospy.Subscriber("chatter", String, callback)
     rospy.spin()
 

@@ -5,10 +5,12 @@ from random import random
 
 import rospy
 from basics.msg import Complex
+from rosbook_env.master_watch import survive_master_restart
 
 
 def main():
     rospy.init_node("message_publisher")
+    survive_master_restart()  # re-registers with a restarted roscore
     pub = rospy.Publisher("complex", Complex, queue_size=10)
     rate = rospy.Rate(2, reset=True)  # reset: survive sim time jumping back
     while not rospy.is_shutdown():

@@ -3,6 +3,7 @@
 
 import rospy
 from basics.msg import Complex
+from rosbook_env.master_watch import survive_master_restart
 
 
 def callback(msg):
@@ -13,6 +14,7 @@ def callback(msg):
 
 def main():
     rospy.init_node("message_subscriber")
+    survive_master_restart()  # re-registers with a restarted roscore
     rospy.Subscriber("complex", Complex, callback)
     rospy.spin()
 

@@ -12,6 +12,7 @@ import sys
 import rospy
 from basics.srv import WordCount, WordCountResponse
 from basics.words import RETURN_MODES, count_words, shape_reply
+from rosbook_env.master_watch import survive_master_restart
 
 
 def main():
@@ -22,6 +23,7 @@ def main():
     args = parser.parse_args(rospy.myargv()[1:])
 
     rospy.init_node("service_server")
+    survive_master_restart()  # re-registers with a restarted roscore
     mode = args.mode or rospy.get_param("~mode", "response")
     if mode not in RETURN_MODES:
         rospy.logfatal("~mode must be one of %s, got %r", ", ".join(RETURN_MODES), mode)

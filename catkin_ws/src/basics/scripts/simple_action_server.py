@@ -11,10 +11,12 @@ import actionlib
 import rospy
 from basics.msg import TimerAction, TimerResult
 from basics.timer import NEGATIVE
+from rosbook_env.master_watch import survive_master_restart
 
 
 def main():
     rospy.init_node("timer_action_server")
+    survive_master_restart()  # re-registers with a restarted roscore
 
     def do_timer(goal):
         start_time = rospy.get_time()

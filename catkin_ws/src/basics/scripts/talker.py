@@ -5,11 +5,13 @@ Debian has no rospy_tutorials; this is the talker its launch file starts.
 """
 
 import rospy
+from rosbook_env.master_watch import survive_master_restart
 from std_msgs.msg import String
 
 
 def main():
     rospy.init_node("talker")
+    survive_master_restart()  # re-registers with a restarted roscore
     pub = rospy.Publisher("chatter", String, queue_size=10)
     rate = rospy.Rate(10, reset=True)  # reset: survive sim time jumping back
     while not rospy.is_shutdown():

@@ -2,6 +2,7 @@
 """topic_subscriber: prints each integer that arrives on `counter` (Example 3-2)."""
 
 import rospy
+from rosbook_env.master_watch import survive_master_restart
 from std_msgs.msg import Int32
 
 
@@ -11,6 +12,7 @@ def callback(msg):
 
 def main():
     rospy.init_node("topic_subscriber")
+    survive_master_restart()  # re-registers with a restarted roscore
     rospy.Subscriber("counter", Int32, callback)
     rospy.spin()
 

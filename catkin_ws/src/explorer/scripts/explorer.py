@@ -29,6 +29,7 @@ from explorer.recovery import RecoveryParams  # noqa: E402
 from explorer.scan_safety import clearance_ahead  # noqa: E402
 from geometry_msgs.msg import PoseStamped, Twist  # noqa: E402
 from nav_msgs.msg import Path  # noqa: E402
+from rosbook_env.master_watch import survive_master_restart  # noqa: E402
 from sensor_msgs.msg import LaserScan  # noqa: E402
 from std_msgs.msg import Bool  # noqa: E402
 
@@ -293,6 +294,7 @@ class ExplorerNode:
 
 def main():
     rospy.init_node("explorer")
+    survive_master_restart()  # re-registers with a restarted roscore
     try:
         node = ExplorerNode()
     except ParamError as e:

@@ -9,6 +9,7 @@
 // longer than the scan period (a busy machine, a fast simulator) the scans it could not get
 // to are skipped and counted, never queued up stale.
 #include <ros/ros.h>
+#include <rosbook_env/master_watch.h>
 
 #include <atomic>
 #include <cstdint>
@@ -422,6 +423,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", e.what());
     return 2;
   }
+  const rosbook_env::MasterWatch master_watch;  // re-registers with a restarted roscore
   // Two threads: the service and the scan callback must not block each other for long.
   ros::AsyncSpinner spinner(2);
   spinner.start();

@@ -31,6 +31,7 @@ from move_base_msgs.msg import MoveBaseAction, MoveBaseActionGoal, MoveBaseResul
 from nav_msgs.msg import OccupancyGrid  # noqa: E402
 from nav_msgs.msg import Path as PathMsg
 from nav_msgs.srv import GetPlan, GetPlanResponse  # noqa: E402
+from rosbook_env.master_watch import survive_master_restart  # noqa: E402
 from sensor_msgs.msg import LaserScan  # noqa: E402
 
 
@@ -381,6 +382,7 @@ class MoveBase:
 
 def main():
     rospy.init_node("move_base")
+    survive_master_restart()  # re-registers with a restarted roscore
     try:
         MoveBase()
     except (ParamError, ValueError) as e:

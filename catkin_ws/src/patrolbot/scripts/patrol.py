@@ -18,6 +18,7 @@ import rospy
 from actionlib_msgs.msg import GoalStatus
 from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
 from patrolbot.waypoints import WaypointError, load_waypoints
+from rosbook_env.master_watch import survive_master_restart
 
 # The book's waypoints were for its Stage map; these are corridor cells of the maze world.
 waypoints = [
@@ -71,6 +72,7 @@ def main():
     # by a non-interactive shell inherits SIGINT ignored.
     signal.signal(signal.SIGINT, signal.default_int_handler)
     rospy.init_node("patrol", disable_signals=True)
+    survive_master_restart()  # re-registers with a restarted roscore
     client = actionlib.SimpleActionClient("move_base", MoveBaseAction)
     try:
         patrol(client, poses, args.loops)

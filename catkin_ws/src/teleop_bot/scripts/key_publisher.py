@@ -4,6 +4,7 @@
 import sys
 
 import rospy
+from rosbook_env.master_watch import survive_master_restart
 from std_msgs.msg import String
 from teleop_bot.terminal import KeyReader, NotATerminal, cbreak_terminal
 
@@ -18,6 +19,7 @@ def main():
         )
         return 1
     rospy.init_node("keyboard_driver")
+    survive_master_restart()  # re-registers with a restarted roscore
     key_pub = rospy.Publisher("keys", String, queue_size=10)
     reader = KeyReader(fd)
     try:

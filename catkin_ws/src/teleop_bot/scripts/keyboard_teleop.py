@@ -12,6 +12,7 @@ import sys
 
 import rospy
 from geometry_msgs.msg import Twist
+from rosbook_env.master_watch import survive_master_restart
 from teleop_bot.keyboard_teleop import HELP, KeyboardTeleop, status_line
 from teleop_bot.params import ParamError, positive_number
 from teleop_bot.terminal import KeyReader, NotATerminal, cbreak_terminal
@@ -68,6 +69,7 @@ def main():
         )
         return 1
     rospy.init_node("turtlebot_teleop_keyboard")
+    survive_master_restart()  # re-registers with a restarted roscore
     try:
         params = read_params()
         hz = positive_number("~rate", rospy.get_param("~rate", 10.0))

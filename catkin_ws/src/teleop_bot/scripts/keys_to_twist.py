@@ -3,6 +3,7 @@
 
 import rospy
 from geometry_msgs.msg import Twist
+from rosbook_env.master_watch import survive_master_restart
 from std_msgs.msg import String
 from teleop_bot.keys import velocities_for_key
 
@@ -18,6 +19,7 @@ def keys_cb(msg, twist_pub):
 
 def main():
     rospy.init_node("keys_to_twist")
+    survive_master_restart()  # re-registers with a restarted roscore
     twist_pub = rospy.Publisher("cmd_vel", Twist, queue_size=1)
     rospy.Subscriber("keys", String, keys_cb, twist_pub)
     rospy.spin()

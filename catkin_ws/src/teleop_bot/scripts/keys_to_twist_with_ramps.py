@@ -10,6 +10,7 @@ import threading
 
 import rospy
 from geometry_msgs.msg import Twist
+from rosbook_env.master_watch import survive_master_restart
 from rosbook_env.sim_time import warn_if_no_clock
 from std_msgs.msg import String
 from teleop_bot.keys import velocities_for_key
@@ -65,6 +66,7 @@ class RampedKeysToTwist:
 
 def main():
     rospy.init_node("keys_to_twist")
+    survive_master_restart()  # re-registers with a restarted roscore
     warn_if_no_clock()  # says so if /use_sim_time waits for a /clock that never comes
     try:
         angular_scale = fetch_param("~angular_scale", 0.1, finite_number)

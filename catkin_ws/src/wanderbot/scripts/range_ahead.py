@@ -2,6 +2,7 @@
 """Print the range to whatever is straight ahead, from the middle beam of `scan`."""
 
 import rospy
+from rosbook_env.master_watch import survive_master_restart
 from sensor_msgs.msg import LaserScan
 from wanderbot.ranges import format_range_ahead, middle_range
 
@@ -13,6 +14,7 @@ def scan_callback(msg):
 
 def main():
     rospy.init_node("range_ahead")
+    survive_master_restart()  # re-registers with a restarted roscore
     rospy.Subscriber("scan", LaserScan, scan_callback, queue_size=1)
     rospy.spin()
 

@@ -3,12 +3,14 @@
 
 import rospy
 from geometry_msgs.msg import Twist
+from rosbook_env.master_watch import survive_master_restart
 from rosbook_env.sim_time import warn_if_no_clock
 from wanderbot.behaviours import TrafficLight
 
 
 def main():
     rospy.init_node("red_light_green_light")
+    survive_master_restart()  # re-registers with a restarted roscore
     warn_if_no_clock()  # says so if /use_sim_time waits for a /clock that never comes
     cmd_vel_pub = rospy.Publisher("cmd_vel", Twist, queue_size=1)
 

@@ -11,6 +11,7 @@ import threading
 
 import rospy
 from geometry_msgs.msg import Twist
+from rosbook_env.master_watch import survive_master_restart
 from rosbook_env.sim_time import warn_if_no_clock
 from sensor_msgs.msg import LaserScan
 from wanderbot.behaviours import Wanderer
@@ -58,6 +59,7 @@ class WanderNode:
 
 def main():
     rospy.init_node("wander")
+    survive_master_restart()  # re-registers with a restarted roscore
     warn_if_no_clock()  # says so if /use_sim_time waits for a /clock that never comes
     try:
         node = WanderNode()

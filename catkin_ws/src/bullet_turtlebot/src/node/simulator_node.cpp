@@ -1,5 +1,6 @@
 // simulator: the Turtlebot simulator node (stands in for Gazebo and Stage).
 #include <ros/ros.h>
+#include <rosbook_env/master_watch.h>
 
 #include <csignal>
 #include <cstdio>
@@ -94,6 +95,7 @@ int main(int argc, char** argv) {
       start.y = free.y();
     }
     bt::RosSimulator simulator(nh, pnh, world, config, start, world_path);
+    const rosbook_env::MasterWatch master_watch;  // re-registers with a restarted roscore
     const int status = simulator.run();
     ros::shutdown();
     return status;
