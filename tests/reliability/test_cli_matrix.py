@@ -111,6 +111,51 @@ CASES = {
         "cannot create the output folder",
     ),
     # world tools
+    "world_to_map empty name": (
+        ["bullet_turtlebot", "world_to_map", "maze", "-f", ""],
+        2,
+        "-f needs a base name",
+    ),
+    "world_to_map resolution -1": (
+        ["bullet_turtlebot", "world_to_map", "maze", "--resolution", "-1", "-f", "{tmp}/w"],
+        2,
+        "--resolution must be > 0",
+    ),
+    "score_slam tolerance -1": (
+        ["gmapping_lite", "score_slam", "{nested}", "--world", "maze", "--tolerance", "-1"],
+        2,
+        "must be a finite distance of 0 m or more",
+    ),
+    "score_slam tolerance nan": (
+        ["gmapping_lite", "score_slam", "{nested}", "--world", "maze", "--tolerance", "nan"],
+        2,
+        "must be a finite distance of 0 m or more",
+    ),
+    "score_slam missing bag": (
+        ["gmapping_lite", "score_slam", "{tmp}/none.bag", "--world", "maze"],
+        1,
+        "none.bag: no such bag file",
+    ),
+    "score_slam not a bag": (
+        ["gmapping_lite", "score_slam", "{nested}", "--world", "maze"],
+        1,
+        "cannot read the bag",
+    ),
+    "score_slam unknown world": (
+        ["gmapping_lite", "score_slam", "{nested}", "--world", "nosuchworld"],
+        1,
+        "cannot draw the true map of --world",
+    ),
+    "slam_offline param without a value": (
+        ["gmapping_lite", "slam_offline", "{nested}", "--param", "nonsense"],
+        2,
+        "bad --param 'nonsense'",
+    ),
+    "slam_offline param not a number": (
+        ["gmapping_lite", "slam_offline", "{nested}", "--param", "delta=abc"],
+        2,
+        "bad --param 'delta=abc'",
+    ),
     "world_to_map unknown world": (
         ["bullet_turtlebot", "world_to_map", "nosuch", "-f", "{tmp}/w"],
         1,

@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
     if (arg == "-h" || arg == "--help") return usage("help"), 0;
     if (arg == "-f") {
       const char* v = value("-f");
-      if (!v) return usage("-f needs a name");
+      if (!v || !*v) return usage("-f needs a base name (it writes NAME.pgm and NAME.yaml)");
       out = v;
     } else if (arg == "--resolution" || arg == "--margin" || arg == "--min-height") {
       const char* v = value(arg.c_str());
