@@ -124,12 +124,12 @@ CASES = {
     "score_slam tolerance -1": (
         ["gmapping_lite", "score_slam", "{nested}", "--world", "maze", "--tolerance", "-1"],
         2,
-        "must be a finite distance of 0 m or more",
+        "argument --tolerance: '-1' must be 0 or more",
     ),
     "score_slam tolerance nan": (
         ["gmapping_lite", "score_slam", "{nested}", "--world", "maze", "--tolerance", "nan"],
         2,
-        "must be a finite distance of 0 m or more",
+        "argument --tolerance: 'nan' is not a finite number",
     ),
     "score_slam missing bag": (
         ["gmapping_lite", "score_slam", "{tmp}/none.bag", "--world", "maze"],
