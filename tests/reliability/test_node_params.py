@@ -139,10 +139,15 @@ PARAM_CASES = {
 }
 
 
+def node_name(case):
+    """A ROS node name of its own for each row, so no row sees another's parameters."""
+    return "row_" + "".join(c if c.isalnum() else "_" for c in case)
+
+
 @pytest.mark.parametrize("case", sorted(PARAM_CASES))
 def test_node_refuses_a_bad_parameter_at_start_up(shared_ros, case):
     package, node, args, texts = PARAM_CASES[case]
-    name = "row_" + "".join(c if c.isalnum() else "_" for c in case)
+    name = node_name(case)
     done = shared_ros.run(["rosrun", package, node, *args, f"__name:={name}"], check=False)
     out = done.stdout + done.stderr
     assert done.returncode == 2, out
@@ -188,7 +193,7 @@ def test_map_server_refuses_a_map_it_cannot_serve(shared_ros, tmp_path, case):
     write_map_files(tmp_path)
     yaml_path = tmp_path / "map.yaml"
     yaml_path.write_text(MAP_YAML.format(**{**GOOD, **fields}))
-    name = "row_" + "".join(c if c.isalnum() else "_" for c in case)
+    name = node_name(case)
     cmd = ["rosrun", "map_server", "map_server", str(yaml_path), f"__name:={name}"]
     done = shared_ros.run(cmd, check=False)
     out = done.stdout + done.stderr
