@@ -190,7 +190,7 @@ class SlamGmappingNode {
     // At most one line every 30 wall seconds: a fast simulator runs many scan periods a
     // second, and the count in each line says how it went since.
     const ros::WallTime wall_now = ros::WallTime::now();
-    if (skipped > skipped_reported_ && (skipped_reported_ == 0 || wall_now >= next_skip_warning_)) {
+    if (skipped > skipped_reported_ && wall_now >= next_skip_warning_) {  // the first at once
       ROS_WARN("slam_gmapping: falling behind the scans: %llu of %llu skipped so far (each "
                "mapped the newest); updates take longer than the scan period. A lower "
                "simulator speed, fewer particles or a higher throttle_scans lets it keep up",
