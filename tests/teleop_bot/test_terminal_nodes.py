@@ -70,10 +70,16 @@ def test_key_publisher_without_a_terminal_says_so(ros):
     assert "not a terminal" in done.stderr
 
 
+def use_sim_time(ros):
+    """Set before the node starts: a node that read use_sim_time false never subscribes to
+    /clock, and the lock-step clock would wait for it in vain."""
+    ros.run(["rosparam", "set", "/use_sim_time", "true"])
+
+
 def typing_clock(ros, master, gate, ticks, *typing):
     """A lock-step clock (lockstep.py) on `gate`, 0.1 s a tick, that types into the terminal
-    `master`: TEXT@T or TEXT@T1-T2 (every tick from T1 to T2, as a held key repeats)."""
-    ros.run(["rosparam", "set", "/use_sim_time", "true"])
+    `master`: TEXT@T or TEXT@T1-T2 (every tick from T1 to T2, as a held key repeats).
+    The node must have been started after use_sim_time(ros)."""
     options = ["--tty-fd", master] + [f"--type={t}" for t in typing]
     return lockstep.start(ros, gate, 0.1, ticks, *options, pass_fds=(master,))
 
@@ -83,6 +89,7 @@ def test_keyboard_teleop_prints_help_ramps_while_held_and_stops_when_released(ro
     # to 3 s (0.2 m/s needs 1 s at 0.2 m/s^2), released (stop smoothly 0.75 s after the last
     # i), j held from 5.5 s to 6.9 s, space (force stop) at 7 s, q at 8 s.
     keys = ["i@0.5-3.0", "j@5.5-6.9", " @7.0", "q@8.0"]
+    use_sim_time(ros)
     proc, master, slave = start_in_terminal(
         ros, ["rosrun", "teleop_bot", "keyboard_teleop.py"], "keyboard_teleop"
     )
@@ -128,6 +135,7 @@ def test_keyboard_teleop_prints_help_ramps_while_held_and_stops_when_released(ro
 
 
 def test_keyboard_teleop_launch_reads_the_terminal_and_drives_the_mux_input(ros):
+    use_sim_time(ros)
     proc, master, slave = start_in_terminal(
         ros, ["roslaunch", "teleop_bot", "keyboard_teleop.launch"], "keyboard_teleop_launch"
     )

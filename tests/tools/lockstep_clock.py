@@ -20,7 +20,8 @@ node's main thread sleeps); should it happen, the clock moves on without a messa
 (never twice in a row) after --credit wall seconds, and the node catches up.
 
 Injections at sim time T (seconds after --start, a whole number of ticks), made after that
-tick's message and before the next tick:
+tick's message and before the next tick, which waits until the node has read them (its own
+count of messages received, tests/tools/delivery.py):
   --say TOPIC=TEXT@T[/ECHOES]  publish std_msgs/String TEXT on TOPIC, then wait for ECHOES
                                more changes of the gate message (a node that answers each
                                input at once with a new value). Changes, not messages: a
@@ -53,6 +54,7 @@ from std_msgs.msg import String
 from std_srvs.srv import Trigger
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+from delivery import Delivery  # noqa: E402
 from topic_probe import to_plain  # noqa: E402
 
 NS = 1_000_000_000
@@ -80,6 +82,7 @@ class Lockstep:
         self.gate_topic = rospy.resolve_name(gate)
         self.gate_sub = None
         self.inputs = []  # publishers whose subscribers must be connected before tick 1
+        self.deliveries = []  # their Delivery counts, once connected
         self._last_was_credit = False
         self.clock_pub = rospy.Publisher("/clock", Clock, queue_size=10)
 
@@ -120,6 +123,13 @@ class Lockstep:
         self.wait(self.clock_subscribers_connected, "the /clock subscribers")
         for pub in self.inputs:
             self.wait(lambda p=pub: p.get_num_connections() > 0, f"a subscriber of {pub.name}")
+        self.deliveries = [Delivery(pub) for pub in self.inputs]
+
+    def inputs_taken(self):
+        """Wait until the node has read what on_tick published: written to its socket is
+        not enough, its receive thread may lag ticks behind under load."""
+        for delivery in self.deliveries:
+            self.wait(delivery.taken, f"{delivery.topic} read by its subscribers")
 
     def _on_gate(self, msg):
         plain = to_plain(msg)
@@ -176,6 +186,7 @@ class Lockstep:
         first tick, answers not awaited)."""
         if on_tick is not None:
             on_tick(0)
+            self.inputs_taken()
         for _ in range(ticks):
             target = self.arrived() + 1  # counted before the tick: the node may be quick
             with self.cond:
@@ -186,6 +197,7 @@ class Lockstep:
             if on_tick is not None:
                 target = self.changed()
                 echoes = on_tick(self.tick)
+                self.inputs_taken()
                 if echoes:
                     self.expect(target + echoes, count="changes")
         if self.out:
