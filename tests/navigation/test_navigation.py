@@ -23,8 +23,9 @@ GOALS = [(3.75, 0.75, 1.5708), (2.25, 2.25, 3.1416), (0.75, 0.75, 0.0)]
 # the robot is, so at some goals the estimate is off by up to about 0.15 m along it.
 GOAL_POSITION_LIMIT = 0.2
 XY_GOAL_TOLERANCE = 0.05  # move_base_lite's config/move_base_params.yaml
-# m: amcl updates every update_min_d = 0.25 m of travel (amcl.launch); at the simulator's odometry noise
-# (a few per cent) and with a last command's worth of slow approach, a few centimetres.
+# m: amcl updates every update_min_d = 0.25 m of travel (amcl.launch); at the simulator's
+# odometry noise (a few per cent) and with a last command's worth of slow approach, a few
+# centimetres.
 DRIFT_SINCE_LAST_UPDATE = 0.05
 GOAL_YAW_LIMIT = 0.2
 AMCL_TRACKING_LIMIT = 0.2  # m, largest error after the first two updates while driving

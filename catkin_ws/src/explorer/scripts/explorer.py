@@ -24,12 +24,12 @@ from explorer.exploration import Explorer, ExplorerParams  # noqa: E402
 from explorer.follower import FollowerParams  # noqa: E402
 from explorer.map_message import MapFormatError, decode_occupancy_grid  # noqa: E402
 from explorer.map_planner import MapPlanner, PlannerParams  # noqa: E402
-from explorer.params import ParamError, non_negative, positive  # noqa: E402
 from explorer.recovery import RecoveryParams  # noqa: E402
 from explorer.scan_safety import clearance_ahead  # noqa: E402
 from geometry_msgs.msg import PoseStamped, Twist  # noqa: E402
 from nav_msgs.msg import Path  # noqa: E402
 from rosbook_env.master_watch import survive_master_restart  # noqa: E402
+from rosbook_env.params import ParamError, non_negative, positive  # noqa: E402
 from sensor_msgs.msg import LaserScan  # noqa: E402
 from std_msgs.msg import Bool  # noqa: E402
 

@@ -20,7 +20,6 @@ import rospy  # noqa: E402
 import tf2_ros  # noqa: E402
 from explorer.follower import FollowerParams  # noqa: E402
 from explorer.grid import GridGeometry  # noqa: E402
-from explorer.params import ParamError, non_negative, positive  # noqa: E402
 from explorer.recovery import RecoveryParams  # noqa: E402
 from explorer.scan_safety import clearance_ahead  # noqa: E402
 from geometry_msgs.msg import PoseStamped, Twist  # noqa: E402
@@ -32,6 +31,7 @@ from nav_msgs.msg import OccupancyGrid  # noqa: E402
 from nav_msgs.msg import Path as PathMsg
 from nav_msgs.srv import GetPlan, GetPlanResponse  # noqa: E402
 from rosbook_env.master_watch import survive_master_restart  # noqa: E402
+from rosbook_env.params import ParamError, non_negative, positive  # noqa: E402
 from sensor_msgs.msg import LaserScan  # noqa: E402
 
 

@@ -13,14 +13,14 @@ import sys
 import rospy
 from geometry_msgs.msg import Twist
 from rosbook_env.master_watch import survive_master_restart
+from rosbook_env.params import ParamError, positive
 from teleop_bot.keyboard_teleop import HELP, KeyboardTeleop, status_line
-from teleop_bot.params import ParamError, positive_number
 from teleop_bot.terminal import KeyReader, NotATerminal, cbreak_terminal
 
 
 def read_params():
     def get(name, default):
-        return positive_number("~" + name, rospy.get_param("~" + name, default))
+        return positive("~" + name, rospy.get_param("~" + name, default))
 
     return {
         "speed": get("speed", 0.2),
@@ -72,7 +72,7 @@ def main():
     survive_master_restart()  # re-registers with a restarted roscore
     try:
         params = read_params()
-        hz = positive_number("~rate", rospy.get_param("~rate", 10.0))
+        hz = positive("~rate", rospy.get_param("~rate", 10.0))
     except ParamError as error:
         rospy.logfatal(str(error))
         return 2

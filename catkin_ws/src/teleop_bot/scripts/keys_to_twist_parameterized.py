@@ -10,15 +10,15 @@ import threading
 import rospy
 from geometry_msgs.msg import Twist
 from rosbook_env.master_watch import survive_master_restart
+from rosbook_env.params import ParamError, finite
 from rosbook_env.sim_time import warn_if_no_clock
 from std_msgs.msg import String
 from teleop_bot.keys import velocities_for_key
-from teleop_bot.params import ParamError, finite_number
 
 
 def scale_param(name, label, default):
     if rospy.has_param(name):
-        return finite_number(name, rospy.get_param(name))
+        return finite(name, rospy.get_param(name))
     rospy.logwarn("WARNING: %s scale not provided. Defaulting to %.1f" % (label, default))
     return default
 

@@ -11,10 +11,10 @@ import threading
 import rospy
 from geometry_msgs.msg import Twist
 from rosbook_env.master_watch import survive_master_restart
+from rosbook_env.params import ParamError, finite, positive
 from rosbook_env.sim_time import warn_if_no_clock
 from std_msgs.msg import String
 from teleop_bot.keys import velocities_for_key
-from teleop_bot.params import ParamError, finite_number, positive_number
 from teleop_bot.ramps import ramped_twist
 
 
@@ -69,10 +69,10 @@ def main():
     survive_master_restart()  # re-registers with a restarted roscore
     warn_if_no_clock()  # says so if /use_sim_time waits for a /clock that never comes
     try:
-        angular_scale = fetch_param("~angular_scale", 0.1, finite_number)
-        linear_scale = fetch_param("~linear_scale", 0.1, finite_number)
-        angular_accel = fetch_param("~angular_accel", 1.0, positive_number)
-        linear_accel = fetch_param("~linear_accel", 1.0, positive_number)
+        angular_scale = fetch_param("~angular_scale", 0.1, finite)
+        linear_scale = fetch_param("~linear_scale", 0.1, finite)
+        angular_accel = fetch_param("~angular_accel", 1.0, positive)
+        linear_accel = fetch_param("~linear_accel", 1.0, positive)
     except ParamError as error:
         rospy.logfatal(str(error))
         return 2

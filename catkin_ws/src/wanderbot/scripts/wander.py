@@ -12,20 +12,20 @@ import threading
 import rospy
 from geometry_msgs.msg import Twist
 from rosbook_env.master_watch import survive_master_restart
+from rosbook_env.params import ParamError, finite, positive
 from rosbook_env.sim_time import warn_if_no_clock
 from sensor_msgs.msg import LaserScan
 from wanderbot.behaviours import Wanderer
-from wanderbot.params import ParamError, finite_number, positive_number
 from wanderbot.ranges import min_range
 
 
 class WanderNode:
     def __init__(self):
-        self.forward_speed = finite_number("~forward_speed", rospy.get_param("~forward_speed", 0.4))
-        self.turn_speed = finite_number("~turn_speed", rospy.get_param("~turn_speed", 1.0))
-        self.min_range = positive_number("~min_range", rospy.get_param("~min_range", 0.8))
-        self.drive_time = positive_number("~drive_time", rospy.get_param("~drive_time", 30.0))
-        self.spin_time = positive_number("~spin_time", rospy.get_param("~spin_time", 5.0))
+        self.forward_speed = finite("~forward_speed", rospy.get_param("~forward_speed", 0.4))
+        self.turn_speed = finite("~turn_speed", rospy.get_param("~turn_speed", 1.0))
+        self.min_range = positive("~min_range", rospy.get_param("~min_range", 0.8))
+        self.drive_time = positive("~drive_time", rospy.get_param("~drive_time", 30.0))
+        self.spin_time = positive("~spin_time", rospy.get_param("~spin_time", 5.0))
         self.lock = threading.Lock()
         self.range_ahead = None
         self.got_scan = False

@@ -8,7 +8,6 @@ import pytest
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
 
 from wanderbot.behaviours import TrafficLight, Wanderer  # noqa: E402
-from wanderbot.params import ParamError, finite_number, positive_number  # noqa: E402
 
 
 def run_light(start, seconds, dt=0.1):
@@ -61,17 +60,6 @@ def test_wanderer_spins_again_when_still_blocked_after_spinning():
     assert w.update(6.1, 0.5) == Wanderer.SPIN  # no forward command while blocked
     assert w.update(11.0, 3.0) == Wanderer.SPIN  # the second spin runs its full 5 s
     assert w.update(11.2, 3.0) == Wanderer.DRIVE
-
-
-def test_param_checks():
-    assert positive_number("~x", 2) == 2.0
-    assert finite_number("~x", -0.5) == -0.5
-    for bad in ("fast", float("nan"), float("inf"), True, None):
-        with pytest.raises(ParamError, match="~x"):
-            finite_number("~x", bad)
-    for bad in (0, -1.0, float("inf")):
-        with pytest.raises(ParamError, match="~x"):
-            positive_number("~x", bad)
 
 
 def test_traffic_light_keeps_alternating_after_time_jumps_back():
