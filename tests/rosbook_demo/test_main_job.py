@@ -4,8 +4,10 @@ map with map_saver, scores it against ground truth and draws the overlay. A shor
 
 import json
 import os
+import signal
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -92,3 +94,62 @@ def test_demo_rejects_nonsense_arguments(tmp_path):
     )
     assert done.returncode == 2
     assert "--sim-seconds" in done.stderr
+
+
+def descendants(pid):
+    """{pid: command line} of every process below `pid` (from /proc)."""
+    children = {}
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            fields = stat.read_text().rsplit(")", 1)[1].split()
+            cmdline = (stat.parent / "cmdline").read_bytes().replace(b"\0", b" ").decode()
+        except (OSError, IndexError):
+            continue  # a process that ended while we looked
+        children.setdefault(int(fields[1]), []).append((int(stat.parent.name), cmdline))
+    found, todo = {}, [pid]
+    while todo:
+        for child, cmdline in children.get(todo.pop(), []):
+            found[child] = cmdline
+            todo.append(child)
+    return found
+
+
+@pytest.mark.slow
+@pytest.mark.timeout(300)
+def test_demo_ends_naming_slam_gmapping_when_it_dies(tmp_path):
+    """slam_gmapping is required: killed mid-run, the main job stops at once and says which
+    node died, instead of exploring on without a map."""
+    env = ros_environment(0)
+    env.pop("ROS_MASTER_URI")
+    stdout = tmp_path / "stdout"
+    with open(stdout, "w") as sink:
+        demo = subprocess.Popen(
+            ["rosrun", "rosbook_demo", "mapping_demo", "--sim-seconds", "3600"]
+            + ["--progress-every", "2", "--out", str(tmp_path / "out")],
+            stdout=sink,
+            stderr=subprocess.PIPE,
+            text=True,
+            env=env,
+            stdin=subprocess.DEVNULL,
+        )
+    try:
+
+        def slam_pid():
+            if "s simulated" not in stdout.read_text():  # the simulation is under way
+                return None
+            pids = [p for p, cmd in descendants(demo.pid).items() if "__name:=slam_gmapping" in cmd]
+            return pids[0] if pids else None
+
+        deadline = time.monotonic() + 180
+        while slam_pid() is None:
+            assert demo.poll() is None, demo.stderr.read()
+            assert time.monotonic() < deadline, "no slam_gmapping under a running main job"
+            time.sleep(0.2)
+        os.kill(slam_pid(), signal.SIGKILL)
+        _, err = demo.communicate(timeout=120)
+    finally:
+        if demo.poll() is None:
+            demo.kill()
+            demo.wait()
+    assert demo.returncode == 1, err
+    assert "mapping_demo: slam_gmapping died, which ends the run" in err, err

@@ -1,7 +1,12 @@
 import math
 
 from diagnostic_msgs.msg import DiagnosticStatus, KeyValue
-from rosbook_demo.progress import ProgressMeter, slam_scan_counts, slam_skip_warning
+from rosbook_demo.progress import (
+    ProgressMeter,
+    died_nodes,
+    slam_scan_counts,
+    slam_skip_warning,
+)
 
 
 def test_progress_line_reports_speedup_and_distance():
@@ -47,3 +52,16 @@ def test_slam_skip_warning_names_the_share_skipped_and_the_fix():
     # Other nodes' statuses, or a status without the counts, are not slam_gmapping's.
     assert slam_scan_counts(scans_status("/other: motors", received=1, skipped=1)) is None
     assert slam_scan_counts(scans_status("/slam_gmapping: scans", received=4)) is None
+
+
+def test_died_nodes_names_the_required_nodes_roslaunch_saw_die():
+    log = (
+        "process[slam_gmapping-3]: started with pid [41]\n"
+        "================================================================================"
+        "REQUIRED process [slam_gmapping-3] has died!\n"
+        "process has died [pid 41, exit code -9, cmd ...].\n"
+        "REQUIRED process [slam_gmapping-3] has died!\n"
+        "REQUIRED process [record-5] has died!\n"
+    )
+    assert died_nodes(log) == ["slam_gmapping", "record"]
+    assert died_nodes("all is well\n") == []

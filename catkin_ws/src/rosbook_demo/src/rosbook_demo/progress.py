@@ -1,6 +1,7 @@
 """Progress lines for long simulated runs: simulated time, speed-up, distance, map size."""
 
 import math
+import re
 
 # A run that holds less than this share of the speed asked is reported: below it, the pauses
 # the simulator makes for a lagging driver (~wait_for_commands) or the machine's load have
@@ -88,3 +89,17 @@ def slam_skip_warning(counts):
         f"slam_gmapping fell behind and skipped {skipped} of {received} scans "
         f"({skipped / received:.0%}); a lower --speed lets it map every scan"
     )
+
+
+# roslaunch's line when a node marked required="true" ends: "REQUIRED process [slam_gmapping-3]
+# has died!" (the number is roslaunch's own count of the processes it started).
+_REQUIRED_DIED = re.compile(r"REQUIRED process \[(.+?)(?:-\d+)?\] has died")
+
+
+def died_nodes(launch_log):
+    """The required nodes roslaunch reports dead in its output, in order, without repeats."""
+    names = []
+    for name in _REQUIRED_DIED.findall(launch_log):
+        if name not in names:
+            names.append(name)
+    return names
