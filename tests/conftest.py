@@ -10,6 +10,10 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from roskit import RosGraph  # noqa: E402
 
+# The tests are headless: the simulator launch files open rviz where $DISPLAY is set. Tests
+# that need a window make their own display (xvfb-run) and set it for what they start.
+os.environ.pop("DISPLAY", None)
+
 
 @pytest.fixture
 def ros(tmp_path):

@@ -55,15 +55,23 @@ def test_alias_launch_file_includes_ours_with_the_same_arguments(alias):
     ]
 
 
-@pytest.mark.parametrize("package", ["turtlebot_gazebo", "turtlebot_stage"])
-def test_simulator_launch_opens_rviz_only_where_there_is_a_display(package):
-    name = {"turtlebot_gazebo": "turtlebot_playground", "turtlebot_stage": "turtlebot_in_stage"}
-
+@pytest.mark.parametrize(
+    "package, launch_file, needs",
+    [
+        ("turtlebot_gazebo", "turtlebot_playground.launch", []),
+        ("turtlebot_stage", "turtlebot_in_stage.launch", []),
+        ("rosbook_demo", "mapping_live.launch", []),
+        ("rosbook_demo", "drive_and_record.launch", ["bag:=drive.bag"]),
+        ("explorer", "explore_sim.launch", []),
+        ("wanderbot", "wander.launch", []),
+    ],
+)
+def test_simulator_launch_opens_rviz_only_where_there_is_a_display(package, launch_file, needs):
     def nodes(display, *args):
         env = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
         if display:
             env["DISPLAY"] = display
-        cmd = ["roslaunch", "--nodes", package, f"{name[package]}.launch", *args]
+        cmd = ["roslaunch", "--nodes", package, launch_file, *needs, *args]
         done = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=60)
         assert done.returncode == 0, done.stderr
         return set(done.stdout.split())
