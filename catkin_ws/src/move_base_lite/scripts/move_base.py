@@ -20,7 +20,7 @@ import rospy  # noqa: E402
 import tf2_ros  # noqa: E402
 from explorer.follower import FollowerParams  # noqa: E402
 from explorer.grid import GridGeometry  # noqa: E402
-from explorer.params import ParamError, non_negative, positive  # noqa: E402
+from explorer.params import ParamError, count, positive  # noqa: E402
 from explorer.recovery import RecoveryParams  # noqa: E402
 from explorer.scan_safety import clearance_ahead  # noqa: E402
 from geometry_msgs.msg import PoseStamped, Twist  # noqa: E402
@@ -59,7 +59,7 @@ class MoveBase:
         self.nav_params = NavigatorParams(
             xy_goal_tolerance=positive("~xy_goal_tolerance", get("~xy_goal_tolerance", 0.10)),
             yaw_goal_tolerance=positive("~yaw_goal_tolerance", get("~yaw_goal_tolerance", 0.10)),
-            max_recoveries=int(non_negative("~max_recoveries", get("~max_recoveries", 3))),
+            max_recoveries=count("~max_recoveries", get("~max_recoveries", 3)),
         )
         # Turtlebot's navigation tuning drives at up to 0.5 m/s (the Kobuki does 0.7).
         self.follower_params = FollowerParams(

@@ -21,6 +21,14 @@ def non_negative(name, value):
     return number
 
 
+def count(name, value):
+    """A whole number >= 0 (a count of tries): 2.5 is refused, not quietly cut to 2."""
+    number = non_negative(name, value)
+    if not number.is_integer():
+        raise ParamError(f"parameter {name} must be a whole number, got {value!r}")
+    return int(number)
+
+
 def _number(name, value):
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise ParamError(f"parameter {name} must be a number, got {value!r}")
