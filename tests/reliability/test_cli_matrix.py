@@ -171,6 +171,265 @@ CASES = {
         2,
         "invalid choice",
     ),
+    "make_worlds name without family": (
+        ["bullet_turtlebot", "make_worlds.py", "--name", "x", "{tmp}"],
+        2,
+        "--name needs --family",
+    ),
+    "make_worlds name with a folder": (
+        ["bullet_turtlebot", "make_worlds.py", "--family", "lab", "--name", "a/b", "{tmp}"],
+        2,
+        "--name 'a/b' must be a file name without a folder",
+    ),
+    "make_worlds empty name": (
+        ["bullet_turtlebot", "make_worlds.py", "--family", "lab", "--name", "", "{tmp}"],
+        2,
+        "--name '' must be a file name without a folder",
+    ),
+    "make_worlds output is a file": (
+        ["bullet_turtlebot", "make_worlds.py", "--family", "lab", "{tmp}/file"],
+        2,
+        "file is a file; give a folder",
+    ),
+    "make_worlds output under a file": (
+        ["bullet_turtlebot", "make_worlds.py", "--family", "lab", "{tmp}/file/sub"],
+        1,
+        "cannot create the folder",
+    ),
+    "make_worlds seed abc": (
+        ["bullet_turtlebot", "make_worlds.py", "--family", "lab", "--seed", "abc", "{tmp}"],
+        2,
+        "argument --seed: invalid int value: 'abc'",
+    ),
+    "world_to_map no world": (["bullet_turtlebot", "world_to_map"], 2, "no world given"),
+    "world_to_map two worlds": (
+        ["bullet_turtlebot", "world_to_map", "maze", "office", "-f", "{tmp}/w"],
+        2,
+        "more than one world given",
+    ),
+    "world_to_map unknown option": (
+        ["bullet_turtlebot", "world_to_map", "maze", "--bogus"],
+        2,
+        "unknown option --bogus",
+    ),
+    "world_to_map missing folder": (
+        ["bullet_turtlebot", "world_to_map", "maze", "-f", "{tmp}/no/w"],
+        1,
+        "does not exist (create it with: mkdir -p",
+    ),
+    "world_to_map resolution inf": (
+        ["bullet_turtlebot", "world_to_map", "maze", "--resolution", "inf", "-f", "{tmp}/w"],
+        2,
+        "--resolution must be > 0 and finite",
+    ),
+    "world_to_map resolution too fine": (
+        ["bullet_turtlebot", "world_to_map", "maze", "--resolution", "0.0001", "-f", "{tmp}/w"],
+        1,
+        "map would be too large",
+    ),
+    "world_to_map margin nan": (
+        ["bullet_turtlebot", "world_to_map", "maze", "--margin", "nan", "-f", "{tmp}/w"],
+        2,
+        "--margin must be >= 0 and finite",
+    ),
+    "world_to_map margin -5": (
+        ["bullet_turtlebot", "world_to_map", "maze", "--margin", "-5", "-f", "{tmp}/w"],
+        2,
+        "--margin must be >= 0 and finite",
+    ),
+    "world_to_map margin 1e9": (
+        ["bullet_turtlebot", "world_to_map", "maze", "--margin", "1e9", "-f", "{tmp}/w"],
+        1,
+        "map would be too large at this resolution and margin",
+    ),
+    "world_to_map min-height nan": (
+        ["bullet_turtlebot", "world_to_map", "maze", "--min-height", "nan", "-f", "{tmp}/w"],
+        2,
+        "--min-height must be a finite number",
+    ),
+    # map_server's other tools
+    "make_building_map empty name": (
+        ["map_server", "make_building_map", "-f", ""],
+        2,
+        "-f needs a base name",
+    ),
+    "make_building_map missing folder": (
+        ["map_server", "make_building_map", "-f", "{tmp}/no/b"],
+        2,
+        "mkdir -p",
+    ),
+    "make_building_map resolution nan": (
+        ["map_server", "make_building_map", "--resolution", "nan", "-f", "{tmp}/b"],
+        2,
+        "--resolution must be between 0.005 and 1.0 m",
+    ),
+    "map_bench sizes 0": (
+        ["map_server", "map_bench", "--sizes", "0"],
+        2,
+        "sizes between 1 and 10000",
+    ),
+    "map_bench repeat 0": (
+        ["map_server", "map_bench", "--repeat", "0"],
+        2,
+        "--repeat must be >= 1",
+    ),
+    "map_saver occ 101": (["map_server", "map_saver", "--occ", "101"], 2, "occ"),
+    "map_saver timeout abc": (
+        ["map_server", "map_saver", "--timeout", "abc"],
+        2,
+        "'abc' is not a number",
+    ),
+    # gmapping_lite's tools
+    "waypoint_driver speed nan": (
+        ["gmapping_lite", "waypoint_driver", "--speed", "nan"],
+        2,
+        "argument --speed: 'nan' is not a finite number",
+    ),
+    "waypoint_driver speed -1": (
+        ["gmapping_lite", "waypoint_driver", "--speed", "-1"],
+        2,
+        "argument --speed: '-1' must be greater than 0",
+    ),
+    "waypoint_driver turn 0": (
+        ["gmapping_lite", "waypoint_driver", "--turn", "0"],
+        2,
+        "argument --turn: '0' must be greater than 0",
+    ),
+    "waypoint_driver unknown route": (
+        ["gmapping_lite", "waypoint_driver", "--route", "nosuch"],
+        2,
+        "invalid choice: 'nosuch'",
+    ),
+    "slam_bench unknown argument": (
+        ["gmapping_lite", "slam_bench", "--nosuch"],
+        2,
+        "slam_bench: unknown argument '--nosuch'",
+    ),
+    "slam_bench only 0 particles": (
+        ["gmapping_lite", "slam_bench", "--only", "0", "640"],
+        2,
+        "--only PARTICLES must be a whole number in [1, 1000], got '0'",
+    ),
+    "slam_bench only beams abc": (
+        ["gmapping_lite", "slam_bench", "--only", "30", "abc"],
+        2,
+        "--only BEAMS must be a whole number in [2, 10000], got 'abc'",
+    ),
+    "slam_bench only one number": (
+        ["gmapping_lite", "slam_bench", "--only", "30"],
+        2,
+        "wrong number of arguments",
+    ),
+    "slam_bench help": (["gmapping_lite", "slam_bench", "--help"], 0, "usage: slam_bench"),
+    "record_office_bag no arguments": (
+        ["gmapping_lite", "record_office_bag"],
+        2,
+        "usage: record_office_bag OUT.bag",
+    ),
+    "record_office_bag missing folder": (
+        ["gmapping_lite", "record_office_bag", "{tmp}/no/o.bag"],
+        2,
+        "does not exist (create it with: mkdir -p",
+    ),
+    "record_office_bag not a bag name": (
+        ["gmapping_lite", "record_office_bag", "{tmp}/o.txt"],
+        2,
+        "must end in .bag",
+    ),
+    "record_office_bag speed abc": (
+        ["gmapping_lite", "record_office_bag", "{tmp}/o.bag", "abc"],
+        2,
+        "speed 'abc' must be a number >= 0",
+    ),
+    "record_office_bag seed -1": (
+        ["gmapping_lite", "record_office_bag", "{tmp}/o.bag", "4", "-1"],
+        2,
+        "seed '-1' must be a whole number >= 0",
+    ),
+    "score_slam unknown alignment": (
+        ["gmapping_lite", "score_slam", "{nested}", "--world", "maze", "--alignment", "x"],
+        2,
+        "invalid choice: 'x'",
+    ),
+    "slam_offline no bag given": (["gmapping_lite", "slam_offline"], 2, "no bag given"),
+    "slam_offline unknown option": (
+        ["gmapping_lite", "slam_offline", "{nested}", "--bogus"],
+        2,
+        "unknown option --bogus",
+    ),
+    # the main job's other arguments
+    "mapping_demo particles 100000": (
+        ["rosbook_demo", "mapping_demo", "--particles", "100000", "--out", "{tmp}/o"],
+        2,
+        "--particles must be 1 to 1000 (each particle holds a map), got 100000",
+    ),
+    "mapping_demo seed -5": (
+        ["rosbook_demo", "mapping_demo", "--seed", "-5", "--out", "{tmp}/o"],
+        2,
+        "--seed must be a whole number from 0 to 2147483647, got -5",
+    ),
+    "mapping_demo family seed abc": (
+        ["rosbook_demo", "mapping_demo", "--world", "lab:abc", "--out", "{tmp}/o"],
+        2,
+        "--world lab:abc: the seed 'abc' is not a whole number",
+    ),
+    "mapping_demo unknown family": (
+        ["rosbook_demo", "mapping_demo", "--world", "nosuch:1", "--out", "{tmp}/o"],
+        2,
+        "unknown world family 'nosuch'",
+    ),
+    "mapping_demo unknown driver": (
+        ["rosbook_demo", "mapping_demo", "--driver", "nosuch", "--out", "{tmp}/o"],
+        2,
+        "invalid choice: 'nosuch'",
+    ),
+    "mapping_demo sim-param without a value": (
+        ["rosbook_demo", "mapping_demo", "--sim-param", "range_max", "--out", "{tmp}/o"],
+        2,
+        "--sim-param wants NAME=VALUE, got 'range_max'",
+    ),
+    # the book's listings (chapters 3-5, 8) and rqt_lite
+    "simple_action_client duration nan": (
+        ["basics", "simple_action_client.py", "--duration", "nan"],
+        2,
+        "seconds must be finite",
+    ),
+    "simple_action_client duration abc": (
+        ["basics", "simple_action_client.py", "--duration", "abc"],
+        2,
+        "not a number of seconds: 'abc'",
+    ),
+    "fancy_action_client preempt-after -1": (
+        ["basics", "fancy_action_client.py", "--preempt-after", "-1"],
+        2,
+        "a delay cannot be negative: '-1'",
+    ),
+    "fancy_action_client duration inf": (
+        ["basics", "fancy_action_client.py", "--duration", "inf"],
+        2,
+        "seconds must be finite",
+    ),
+    "service_server unknown mode": (
+        ["basics", "service_server.py", "--mode", "nosuch"],
+        2,
+        "invalid choice: 'nosuch'",
+    ),
+    "service_client help": (["basics", "service_client.py", "-h"], 0, "usage: service_client.py"),
+    "keyboard_teleop without a terminal": (
+        ["teleop_bot", "keyboard_teleop.py"],
+        1,
+        "standard input is not a terminal (TTY)",
+    ),
+    "rqt_plot no fields": (
+        ["rqt_lite", "rqt_plot", "--output", "{tmp}/p.png"],
+        2,
+        "the following arguments are required: fields",
+    ),
+    "rqt_graph no master": (
+        ["rqt_lite", "rqt_graph", "--output", "{tmp}/g.png"],
+        1,
+        "rqt_graph: cannot reach the ROS master",
+    ),
     # SLAM offline
     "slam_offline no bag": (
         ["gmapping_lite", "slam_offline", "{tmp}/none.bag", "--out", "{tmp}/m"],

@@ -45,6 +45,79 @@ PARAM_CASES = {
         ["_use_map_topic:=maybe"],
         ["use_map_topic = maybe", "true or false"],
     ),
+    "amcl transform_tolerance nan": (
+        "amcl_lite",
+        "amcl",
+        ["_transform_tolerance:=nan"],
+        ["transform_tolerance = nan", "a finite number"],
+    ),
+    "amcl transform_tolerance -1": (
+        "amcl_lite",
+        "amcl",
+        ["_transform_tolerance:=-1"],
+        ["transform_tolerance = -1", "seconds >= 0"],
+    ),
+    "amcl max_particles 1e9": (
+        "amcl_lite",
+        "amcl",
+        ["_max_particles:=1000000000"],
+        ["max_particles = 1e+09", "<= 1000000"],
+    ),
+    "amcl resample_interval 0": (
+        "amcl_lite",
+        "amcl",
+        ["_resample_interval:=0"],
+        ["resample_interval = 0", ">= 1"],
+    ),
+    "amcl kld_z 0.2": ("amcl_lite", "amcl", ["_kld_z:=0.2"], ["kld_z = 0.2", "in (0.5, 1)"]),
+    "amcl initial_pose_x inf": (
+        "amcl_lite",
+        "amcl",
+        ["_initial_pose_x:=inf"],
+        ["initial_pose_x = inf", "a finite number"],
+    ),
+    "move_base max_recoveries 2.5": (
+        "move_base_lite",
+        "move_base.py",
+        ["_max_recoveries:=2.5"],
+        ["~max_recoveries must be a whole number, got 2.5"],
+    ),
+    "move_base max_recoveries -1": (
+        "move_base_lite",
+        "move_base.py",
+        ["_max_recoveries:=-1"],
+        ["~max_recoveries must be >= 0, got -1"],
+    ),
+    "explorer control_rate 0": (
+        "explorer",
+        "explorer.py",
+        ["_control_rate:=0"],
+        ["~control_rate must be > 0, got 0"],
+    ),
+    "explorer replan_period -1": (
+        "explorer",
+        "explorer.py",
+        ["_replan_period:=-1"],
+        ["~replan_period must be > 0, got -1"],
+    ),
+    "latched_publisher count 0": (
+        "basics",
+        "latched_publisher.py",
+        ["_count:=0"],
+        ["~count must be a positive integer, got 0"],
+    ),
+    "service_server mode nosuch": (
+        "basics",
+        "service_server.py",
+        ["_mode:=nosuch"],
+        ["~mode must be one of response, value, list, tuple, dict, got 'nosuch'"],
+    ),
+    "wander min_range 0": (
+        "wanderbot",
+        "wander.py",
+        ["_min_range:=0"],
+        ["~min_range must be finite and > 0, got 0"],
+    ),
     "move_base robot_radius -1": (
         "move_base_lite",
         "move_base.py",
@@ -149,6 +222,35 @@ def test_node_refuses_a_bad_parameter_at_start_up(shared_ros, case):
     package, node, args, texts = PARAM_CASES[case]
     name = node_name(case)
     done = shared_ros.run(["rosrun", package, node, *args, f"__name:={name}"], check=False)
+    out = done.stdout + done.stderr
+    assert done.returncode == 2, out
+    assert all(text in out for text in texts), out
+
+
+# Values rosrun's _NAME:=VALUE cannot give (an empty string), set on the master first.
+PRESET_CASES = {
+    "amcl empty odom_frame_id": (
+        "amcl_lite",
+        "amcl",
+        {"odom_frame_id": ""},
+        ["parameter odom_frame_id is empty", "_odom_frame_id:=FRAME"],
+    ),
+    "amcl empty base_frame_id": (
+        "amcl_lite",
+        "amcl",
+        {"base_frame_id": ""},
+        ["parameter base_frame_id is empty", "_base_frame_id:=FRAME"],
+    ),
+}
+
+
+@pytest.mark.parametrize("case", sorted(PRESET_CASES))
+def test_node_refuses_a_bad_preset_parameter_at_start_up(shared_ros, case):
+    package, node, params, texts = PRESET_CASES[case]
+    name = node_name(case)
+    for param, value in params.items():
+        shared_ros.master().setParam("/test_node_params", f"/{name}/{param}", value)
+    done = shared_ros.run(["rosrun", package, node, f"__name:={name}"], check=False)
     out = done.stdout + done.stderr
     assert done.returncode == 2, out
     assert all(text in out for text in texts), out

@@ -20,6 +20,7 @@
 #include <mutex>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 #include "amcl_lite/particle_filter.h"
 
@@ -106,6 +107,7 @@ class AmclNode {
     p_.initial_cov_xx = param("initial_cov_xx", p_.initial_cov_xx);
     p_.initial_cov_yy = param("initial_cov_yy", p_.initial_cov_yy);
     p_.initial_cov_aa = param("initial_cov_aa", p_.initial_cov_aa);
+    p_.transform_tolerance = param("transform_tolerance", p_.transform_tolerance);
     const std::string error = validate(p_);
     if (!error.empty()) throw std::invalid_argument(error);
     const std::string odom_model = param<std::string>("odom_model_type", "diff");
@@ -119,7 +121,13 @@ class AmclNode {
     base_frame_ = stripSlash(param<std::string>("base_frame_id", "base_footprint"));
     odom_frame_ = stripSlash(param<std::string>("odom_frame_id", "odom"));
     global_frame_ = stripSlash(param<std::string>("global_frame_id", "map"));
-    transform_tolerance_ = ros::Duration(param("transform_tolerance", 0.1));
+    const std::pair<const char*, const std::string*> frames[] = {
+        {"base_frame_id", &base_frame_}, {"odom_frame_id", &odom_frame_}, {"global_frame_id", &global_frame_}};
+    for (const auto& [name, frame] : frames)
+      if (frame->empty())
+        throw std::invalid_argument(std::string("parameter ") + name +
+                                    " is empty: it must name a TF frame (set it with _" + name + ":=FRAME)");
+    transform_tolerance_ = ros::Duration(p_.transform_tolerance);
     use_map_topic_ = param("use_map_topic", false);
     tf_broadcast_ = param("tf_broadcast", true);
     seed_ = static_cast<uint32_t>(param("seed", 0));

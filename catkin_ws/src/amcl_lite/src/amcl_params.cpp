@@ -36,13 +36,17 @@ std::string validate(const AmclParams& p) {
                 {"initial_pose_a", p.initial_pose_a},
                 {"initial_cov_xx", p.initial_cov_xx},
                 {"initial_cov_yy", p.initial_cov_yy},
-                {"initial_cov_aa", p.initial_cov_aa}};
+                {"initial_cov_aa", p.initial_cov_aa},
+                {"transform_tolerance", p.transform_tolerance}};
   for (const auto& f : finite)
     if (!std::isfinite(f.value)) return bad(f.name, f.value, "a finite number");
   if (p.min_particles < 1) return bad("min_particles", p.min_particles, ">= 1");
   if (p.max_particles < p.min_particles)
     return bad("max_particles", p.max_particles, ">= min_particles (" +
                                                      std::to_string(p.min_particles) + ")");
+  if (p.max_particles > kMaxParticlesCap)
+    return bad("max_particles", p.max_particles,
+               "<= " + std::to_string(kMaxParticlesCap) + " (the filter holds that many)");
   if (!(p.kld_err > 0.0 && p.kld_err < 1.0)) return bad("kld_err", p.kld_err, "in (0, 1)");
   if (!(p.kld_z > 0.5 && p.kld_z < 1.0)) return bad("kld_z", p.kld_z, "in (0.5, 1)");
   const struct {
@@ -61,6 +65,8 @@ std::string validate(const AmclParams& p) {
   if (p.laser_sigma_hit <= 0.0) return bad("laser_sigma_hit", p.laser_sigma_hit, "> 0");
   if (p.laser_likelihood_max_dist <= 0.0)
     return bad("laser_likelihood_max_dist", p.laser_likelihood_max_dist, "> 0");
+  if (p.transform_tolerance < 0.0)
+    return bad("transform_tolerance", p.transform_tolerance, "seconds >= 0");
   if (p.laser_max_beams < 2) return bad("laser_max_beams", p.laser_max_beams, ">= 2");
   if (p.resample_interval < 1) return bad("resample_interval", p.resample_interval, ">= 1");
   if (p.recovery_alpha_slow < 0.0 || p.recovery_alpha_slow > 1.0)

@@ -36,3 +36,16 @@ TEST(AmclParams, BadValuesAreNamedWithTheirRule) {
   p.recovery_alpha_fast = 0.05;
   EXPECT_NE(validate(p).find("recovery_alpha_fast"), std::string::npos);
 }
+
+TEST(AmclParams, RefusesATransformToleranceAndAParticleCountItCannotHonour) {
+  AmclParams p;
+  p.transform_tolerance = std::nan("");  // ros::Duration(nan) would abort the node
+  EXPECT_NE(validate(p).find("transform_tolerance"), std::string::npos) << validate(p);
+  p.transform_tolerance = -1.0;
+  EXPECT_NE(validate(p).find("transform_tolerance = -1"), std::string::npos) << validate(p);
+  p = AmclParams();
+  p.max_particles = 1000000000;  // the filter allocates this many at once
+  EXPECT_NE(validate(p).find("max_particles = 1e+09"), std::string::npos) << validate(p);
+  p.max_particles = amcl_lite::kMaxParticlesCap;
+  EXPECT_EQ(validate(p), "");
+}

@@ -28,8 +28,12 @@ def parse_args(argv):
     parser.add_argument("--seed", type=int, default=1, help="the family's seed (default 1)")
     parser.add_argument("--name", help="file name without extension (default FAMILY_SEED)")
     args = parser.parse_args(argv)
-    if args.family is None and args.name:
+    if args.family is None and args.name is not None:
         parser.error("--name needs --family")
+    if args.name is not None and (args.name in ("", ".", "..") or "/" in args.name):
+        parser.error(f"--name {args.name!r} must be a file name without a folder, e.g. --name big")
+    if args.out_dir is not None and Path(args.out_dir).exists() and not Path(args.out_dir).is_dir():
+        parser.error(f"{args.out_dir} is a file; give a folder to write the world into")
     return args
 
 
@@ -44,17 +48,24 @@ def checked(world, out_dir):
     return path
 
 
+def make_folder(out_dir):
+    try:
+        out_dir.mkdir(parents=True, exist_ok=True)
+    except OSError as err:
+        sys.exit(f"make_worlds.py: cannot create the folder {out_dir}: {err.strerror or err}")
+
+
 def main(argv=None):
     args = parse_args(sys.argv[1:] if argv is None else argv)
     if args.family:
         out_dir = Path(args.out_dir or ".")
-        out_dir.mkdir(parents=True, exist_ok=True)
+        make_folder(out_dir)
         world = world_families.generate(args.family, args.seed, args.name)
         path = checked(world, out_dir)
         print(f"wrote {path} ({world.comment.split(': ', 1)[1]})")
         return
     out_dir = Path(args.out_dir) if args.out_dir else PACKAGE_WORLDS
-    out_dir.mkdir(parents=True, exist_ok=True)
+    make_folder(out_dir)
     for make in shipped_worlds.HAND_MADE:
         write_world(out_dir, make())
     for family in world_families.SHIPPED:

@@ -1,8 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "bullet_turtlebot/occupancy_export.hpp"
 #include "bullet_turtlebot/world_spec.hpp"
@@ -43,4 +45,17 @@ TEST(OccupancyExport, BoxRasterisedInMapServerFormat) {
   int cells = 0;
   for (auto c : again.grid.occupied) cells += c;
   EXPECT_EQ(cells, 50);
+}
+
+TEST(OccupancyExport, RefusesAMarginOrHeightItCannotDraw) {
+  WorldSpec spec;
+  BoxSpec box;
+  box.size_x = box.size_y = 1.0;
+  spec.boxes.push_back(box);
+  const World world(spec);
+  EXPECT_THROW(rasterize_world(world, 0.1, std::nan("")), std::invalid_argument);
+  EXPECT_THROW(rasterize_world(world, 0.1, -5.0), std::invalid_argument);
+  EXPECT_THROW(rasterize_world(world, 0.1, 0.5, std::nan("")), std::invalid_argument);
+  // So many cells that an int would overflow: refused, not drawn as a 1 x 1 map.
+  EXPECT_THROW(rasterize_world(world, 0.1, 1e9), std::invalid_argument);
 }

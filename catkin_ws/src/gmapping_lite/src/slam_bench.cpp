@@ -48,13 +48,50 @@ SlamParams defaults() {
   return p;
 }
 
+const char* const kUsage =
+    "usage: slam_bench [--quick | --book | --only PARTICLES BEAMS]\n"
+    "  --quick: the first row only; --book: the book's settings only;\n"
+    "  --only: one row of the defaults (PARTICLES 1..1000, BEAMS 2..10000)\n";
+
+int usageError(const std::string& problem) {
+  std::fprintf(stderr, "slam_bench: %s\n%s", problem.c_str(), kUsage);
+  return 2;
+}
+
+// A whole number in [lo, hi], all of `text`; false for anything else.
+bool wholeNumber(const char* text, long lo, long hi, int* out) {
+  char* end = nullptr;
+  const long value = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || value < lo || value > hi) return false;
+  *out = static_cast<int>(value);
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  // --quick: the first row only; --book: the book's settings only; --only PARTICLES BEAMS: one row of the defaults.
-  const bool quick = argc > 1 && std::string(argv[1]) == "--quick";
-  const bool only = argc > 3 && std::string(argv[1]) == "--only";
-  const bool book = argc > 1 && std::string(argv[1]) == "--book";
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  const std::string mode = args.empty() ? "" : args[0];
+  if (mode == "-h" || mode == "--help") {
+    std::printf("%s", kUsage);
+    return 0;
+  }
+  const bool quick = mode == "--quick";
+  const bool only = mode == "--only";
+  const bool book = mode == "--book";
+  const std::size_t expected = only ? 3 : mode.empty() ? 0 : 1;
+  if (!mode.empty() && !quick && !only && !book)
+    return usageError("unknown argument '" + mode + "'");
+  if (args.size() != expected) return usageError("wrong number of arguments");
+  int only_particles = 0, only_beams = 0;
+  // The particle bound is slam_gmapping's (param_table.cpp); a laser needs two beams for an
+  // angle increment, and 10000 bounds the synthetic scans' memory.
+  if (only && !wholeNumber(argv[2], 1, 1000, &only_particles))
+    return usageError(std::string("--only PARTICLES must be a whole number in [1, 1000], got '") +
+                      argv[2] + "'");
+  if (only && !wholeNumber(argv[3], 2, 10000, &only_beams))
+    return usageError(std::string("--only BEAMS must be a whole number in [2, 10000], got '") +
+                      argv[3] + "'");
   const SyntheticWorld world = SyntheticWorld::office();
   std::vector<Row> rows;
   for (int beams : {320, 640})
@@ -80,8 +117,8 @@ int main(int argc, char** argv) {
   if (book) rows = {rows[4]};
   if (only) {
     SlamParams p = defaults();
-    p.particles = std::atoi(argv[2]);
-    rows = {{"defaults", p.particles, std::atoi(argv[3]), p}};
+    p.particles = only_particles;
+    rows = {{"defaults", p.particles, only_beams, p}};
   }
 
   std::printf("## gmapping_lite SLAM (synthetic office tour, 10 Hz scans, one core)\n\n");

@@ -31,7 +31,7 @@ from nav_msgs.msg import OccupancyGrid  # noqa: E402
 from nav_msgs.msg import Path as PathMsg
 from nav_msgs.srv import GetPlan, GetPlanResponse  # noqa: E402
 from rosbook_env.master_watch import survive_master_restart  # noqa: E402
-from rosbook_env.params import ParamError, non_negative, positive  # noqa: E402
+from rosbook_env.params import ParamError, count, positive  # noqa: E402
 from sensor_msgs.msg import LaserScan  # noqa: E402
 
 
@@ -59,7 +59,7 @@ class MoveBase:
         self.nav_params = NavigatorParams(
             xy_goal_tolerance=positive("~xy_goal_tolerance", get("~xy_goal_tolerance", 0.10)),
             yaw_goal_tolerance=positive("~yaw_goal_tolerance", get("~yaw_goal_tolerance", 0.10)),
-            max_recoveries=int(non_negative("~max_recoveries", get("~max_recoveries", 3))),
+            max_recoveries=count("~max_recoveries", get("~max_recoveries", 3)),
         )
         # Turtlebot's navigation tuning drives at up to 0.5 m/s (the Kobuki does 0.7).
         self.follower_params = FollowerParams(

@@ -7,7 +7,7 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
 
-from rosbook_env.params import ParamError, finite, non_negative, positive  # noqa: E402
+from rosbook_env.params import ParamError, count, finite, non_negative, positive  # noqa: E402
 
 
 def test_good_values_come_back_as_floats():
@@ -28,3 +28,10 @@ def test_bounds_name_the_value_given():
         positive("~x", 0)
     with pytest.raises(ParamError, match=r"~x must be >= 0, got -1.5"):
         non_negative("~x", -1.5)
+
+
+def test_a_count_is_a_whole_number_of_zero_or_more():
+    assert count("~n", 3) == 3 and count("~n", 2.0) == 2 and count("~n", 0) == 0
+    for bad, says in [(2.5, "whole number"), (-1, ">= 0"), ("3", "a number"), (True, "a number")]:
+        with pytest.raises(ParamError, match=says):
+            count("~n", bad)

@@ -31,7 +31,12 @@ struct AmclParams {
   double initial_cov_xx = 0.5 * 0.5;
   double initial_cov_yy = 0.5 * 0.5;
   double initial_cov_aa = (M_PI / 12.0) * (M_PI / 12.0);
+  double transform_tolerance = 0.1;  // s the map -> odom transform is dated ahead
 };
+
+// The filter holds max_particles particles from the start (a pose and a weight each): the
+// cap keeps that to tens of MB, 200 times amcl's default, instead of whatever a typo asks.
+constexpr int kMaxParticlesCap = 1000000;
 
 // Empty when every value is usable; otherwise one message naming the parameter, its value
 // and what it must be (the node refuses to start with it).

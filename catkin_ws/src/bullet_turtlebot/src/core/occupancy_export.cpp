@@ -20,15 +20,19 @@ bool contains(const Solid& s, double x, double y) {
 
 MapImage rasterize_world(const World& world, double resolution, double margin, double min_height) {
   if (!(resolution > 0) || !std::isfinite(resolution)) throw std::invalid_argument("resolution must be > 0");
+  if (!(margin >= 0) || !std::isfinite(margin)) throw std::invalid_argument("margin must be a finite number >= 0");
+  if (std::isnan(min_height)) throw std::invalid_argument("min_height must be a number");
   MapImage map;
   map.resolution = resolution;
   const Eigen::Vector2d lo = world.min_corner() - Eigen::Vector2d::Constant(margin);
   const Eigen::Vector2d hi = world.max_corner() + Eigen::Vector2d::Constant(margin);
-  const int width = std::max(1, static_cast<int>(std::ceil((hi.x() - lo.x()) / resolution)));
-  const int height = std::max(1, static_cast<int>(std::ceil((hi.y() - lo.y()) / resolution)));
-  if (static_cast<long long>(width) * height > 400LL * 1000 * 1000) {
-    throw std::invalid_argument("map would be too large at this resolution");
+  // Sizes in double first: a huge margin or a tiny resolution must not overflow the int cast.
+  const double columns = std::max(1.0, std::ceil((hi.x() - lo.x()) / resolution));
+  const double rows = std::max(1.0, std::ceil((hi.y() - lo.y()) / resolution));
+  if (!(columns * rows <= 400.0 * 1000 * 1000)) {
+    throw std::invalid_argument("map would be too large at this resolution and margin");
   }
+  const int width = static_cast<int>(columns), height = static_cast<int>(rows);
   map.origin = Pose2D{lo.x(), lo.y(), 0.0};
   map.image.width = width;
   map.image.height = height;

@@ -1,8 +1,10 @@
 // world_to_map: writes a world's ground-truth occupancy grid as a map_server map.
 //   rosrun bullet_turtlebot world_to_map <world name|file.yaml> [-f NAME] [--resolution R]
 //                                          [--margin M] [--min-height H]
+#include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <string>
 
 #include "bullet_turtlebot/occupancy_export.hpp"
@@ -52,7 +54,15 @@ int main(int argc, char** argv) {
     }
   }
   if (world.empty()) return usage("no world given");
-  if (!(resolution > 0)) return usage("--resolution must be > 0");
+  if (!(resolution > 0) || !std::isfinite(resolution)) return usage("--resolution must be > 0 and finite");
+  if (!(margin >= 0) || !std::isfinite(margin)) return usage("--margin must be >= 0 and finite (metres)");
+  if (!std::isfinite(min_height)) return usage("--min-height must be a finite number (metres)");
+  const std::filesystem::path folder = std::filesystem::path(out).parent_path();
+  if (!folder.empty() && !std::filesystem::is_directory(folder)) {
+    std::fprintf(stderr, "world_to_map: cannot write %s.pgm: folder %s does not exist (create it with: mkdir -p '%s')\n",
+                 out.c_str(), folder.c_str(), folder.c_str());
+    return 1;
+  }
   world = bt::resolve_world_path(world, bt::shipped_worlds_dir());
   try {
     const bt::World w(bt::load_world_file(world));

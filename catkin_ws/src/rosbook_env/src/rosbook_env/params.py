@@ -30,3 +30,11 @@ def non_negative(name, value):
     if number < 0:
         raise ParamError(f"parameter {name} must be >= 0, got {value!r}")
     return number
+
+
+def count(name, value):
+    """A whole number >= 0 (a count of tries): 2.5 is refused, not quietly cut to 2."""
+    number = non_negative(name, value)
+    if not number.is_integer():
+        raise ParamError(f"parameter {name} must be a whole number, got {value!r}")
+    return int(number)
