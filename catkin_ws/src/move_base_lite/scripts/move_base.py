@@ -210,6 +210,19 @@ class MoveBase:
             return self.planner.blocked_ahead(path, xy, self.nav_params.blocked_lookahead)
 
     def execute(self, goal_msg):
+        try:
+            self.drive_goals(goal_msg)
+        except rospy.ROSInterruptException:
+            pass  # shutting down in the middle of a sleep: as below
+        if self.server.is_active():
+            # Ctrl-C while driving: the goal ends with the node, said in one line, rather
+            # than with actionlib's traceback or its "did not set the goal to a terminal
+            # status" warning.
+            rospy.loginfo("move_base: shutting down; the current goal is aborted")
+            self.server.set_aborted(MoveBaseResult(), "move_base is shutting down")
+
+    def drive_goals(self, goal_msg):
+        """The goal, then each goal that preempts it, until one ends."""
         rate = rospy.Rate(self.rate, reset=True)  # survive sim time jumping back
         while not rospy.is_shutdown():
             with self.lock:
