@@ -18,6 +18,7 @@ from geometry_msgs.msg import PoseWithCovarianceStamped, Twist
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import LaserScan
 from std_srvs.srv import Empty
+from tf2_msgs.msg import TFMessage
 
 # Wandering turns in place when a reading is nearer than the Kinect's range_min (what it
 # cannot measure; REP 117's -inf) plus the Kobuki's radius (0.18 m), which leaves room to stop
@@ -25,6 +26,8 @@ from std_srvs.srv import Empty
 ROBOT_RADIUS = 0.18
 WANDER_SPEED = 0.3  # m/s
 TURN_RATE = 0.8  # rad/s: amcl updates every update_min_a (0.2 rad), four times a sim second
+# s: the base stops from those speeds within 0.15 s (the Kobuki's 2 m/s^2 and 6 rad/s^2).
+STOPPING = 0.3
 
 
 def yaw_of(q):
@@ -43,6 +46,11 @@ class Recorder:
         self.particles = None
         self.blocked = False
         self.amcl_seen = False  # amcl has its map and has published an estimate
+        # Stamp of the newest scan amcl has processed: it broadcasts map -> odom for every
+        # scan (dated transform_tolerance ahead), whether or not the scan was an update.
+        self.amcl_scan_time = 0.0
+        self.tolerance = rospy.get_param("amcl/transform_tolerance", 0.1)
+        rospy.Subscriber("tf", TFMessage, self.on_tf, queue_size=50)
         self.odom = None  # (x, y, yaw), the newest
         self.drive_time = 0.0  # sim s the robot has been commanded to move
         rospy.Subscriber("odom", Odometry, self.on_odom, queue_size=5)
@@ -59,15 +67,19 @@ class Recorder:
             self.truth.append(
                 (msg.header.stamp.to_sec(), p.position.x, p.position.y, yaw_of(p.orientation))
             )
-            del self.truth[:-2000]
+            # A lagging amcl's estimates still find their truth: 5 minutes at 50 Hz.
+            del self.truth[:-15000]
 
     def on_odom(self, msg):
         p = msg.pose.pose
         self.odom = (p.position.x, p.position.y, yaw_of(p.orientation))
 
-    def update_count(self):
-        with self.lock:
-            return len(self.updates)
+    def on_tf(self, msg):
+        for t in msg.transforms:
+            if t.child_frame_id.lstrip("/") == "odom" and t.header.frame_id.lstrip("/") == "map":
+                self.amcl_scan_time = max(
+                    self.amcl_scan_time, t.header.stamp.to_sec() - self.tolerance
+                )
 
     def on_cloud(self, msg):
         # geometry_msgs/PoseArray as serialized: the header (seq, stamp, frame_id as a length
@@ -147,11 +159,11 @@ def main():
     period = 0.1  # s: a teleop's 10 Hz
     ticker = rospy.Rate(1 / period, reset=True)
     # The robot stops after each update_min_d / update_min_a of motion until amcl has
-    # published an update since the last stop: amcl sees the same motion between updates
-    # however slowly the machine runs it (the first updates with global localization's large
-    # cloud are slow), so the figures do not depend on the load. Time is counted in sim
-    # seconds of driving.
-    anchor, anchor_updates, turned = recorder.odom, recorder.update_count(), 0.0
+    # processed a scan taken after it stopped (and so has updated for that motion): amcl sees
+    # the same motion between updates however slowly the machine runs it (the first updates
+    # with global localization's large cloud are slow), so the figures do not depend on the
+    # load. Time is counted in sim seconds of driving.
+    anchor, stopped_at, turned = recorder.odom, None, 0.0
     spin = 2 * math.pi + min_a  # a full turn in place first, then wandering
     while not rospy.is_shutdown() and recorder.drive_time < args.duration:
         since = recorder.converged_since(args.tolerance, args.yaw_tolerance)
@@ -162,9 +174,10 @@ def main():
         rotated = abs(angle_diff(odom[2], anchor[2]))
         cmd = Twist()
         if moved >= min_d or rotated >= min_a:
-            if recorder.update_count() > anchor_updates:
+            stopped_at = stopped_at or rospy.get_time()
+            if recorder.amcl_scan_time >= stopped_at + STOPPING:
                 turned += rotated
-                anchor, anchor_updates = odom, recorder.update_count()
+                anchor, stopped_at = odom, None
         elif turned < spin or recorder.blocked:
             cmd.angular.z = TURN_RATE
         else:
