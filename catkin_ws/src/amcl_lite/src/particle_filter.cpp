@@ -14,6 +14,9 @@ namespace {
 // amcl's histogram bins for KLD sampling and clustering: 0.5 m x 0.5 m x 10 degrees.
 constexpr double kBinSize = 0.5;
 constexpr double kBinAngle = 10.0 * M_PI / 180.0;
+// Global localization's cloud is at most this many times max_particles (see
+// globalParticleCount): a bound on memory and on the few updates it takes to thin it.
+constexpr double kGlobalBudget = 50.0;
 
 struct BinKey {
   int x, y, a;
@@ -70,8 +73,24 @@ Pose2 ParticleFilter::randomFreePose() {
   return Pose2(c.first, c.second, std::uniform_real_distribution<double>(-M_PI, M_PI)(rng_));
 }
 
+size_t ParticleFilter::globalParticleCount() const {
+  // Enough particles that the bin of amcl's KLD histogram (kBinSize x kBinSize x kBinAngle)
+  // holding the true pose is empty with probability at most 1 - kld_z, amcl's confidence
+  // for its KLD bound: with particles spread uniformly, a bin's count is Poisson, so each
+  // free bin needs ln(1 / (1 - kld_z)) of them on average (4.6 at amcl's 0.99). With fewer,
+  // the Kinect's 58-degree view finds many places that match as well as the nearest
+  // particle to the truth, and the filter settles on one of them.
+  const double cell = field_->resolution();
+  const double free_area = static_cast<double>(field_->freeCells().size()) * cell * cell;
+  const double bins = free_area / (kBinSize * kBinSize) * (2.0 * M_PI / kBinAngle);
+  const double wanted = std::ceil(bins * std::log(1.0 / (1.0 - params_.kld_z)));
+  // Bounded by a compute budget: one global update costs at most that many normal ones.
+  const double budget = kGlobalBudget * static_cast<double>(params_.max_particles);
+  return static_cast<size_t>(std::max<double>(params_.max_particles, std::min(wanted, budget)));
+}
+
 void ParticleFilter::initGlobal() {
-  particles_.assign(params_.max_particles, Particle{});
+  particles_.assign(globalParticleCount(), Particle{});
   const double w = 1.0 / particles_.size();
   for (auto& p : particles_) {
     p.pose = randomFreePose();
@@ -101,6 +120,13 @@ std::vector<int> ParticleFilter::beamIndices(int count, int max_beams) {
 void ParticleFilter::correct(const ScanObservation& scan) {
   const double denom = 2.0 * params_.laser_sigma_hit * params_.laser_sigma_hit;
   const double z_rand = params_.laser_z_rand / scan.range_max;
+  // Beam ends in the laser's frame, once per scan. As amcl's likelihood_field model, readings
+  // outside [range_min, range_max) (max range, too close, NaN, +-inf) carry no hit.
+  std::vector<std::pair<double, double>> ends;
+  ends.reserve(scan.beams.size());
+  for (const Beam& b : scan.beams)
+    if (b.range >= scan.range_min && b.range < scan.range_max)
+      ends.emplace_back(b.range * std::cos(b.angle), b.range * std::sin(b.angle));
   double total = 0.0;
   for (auto& p : particles_) {
     const Pose2 laser = p.pose * scan.laser_in_base;
@@ -108,9 +134,7 @@ void ParticleFilter::correct(const ScanObservation& scan) {
     // amcl's likelihood_field model: sum of cubed beam probabilities, added to 1 so one bad
     // beam cannot zero a particle (a heuristic amcl uses for robustness).
     double weight = 1.0;
-    for (const Beam& b : scan.beams) {
-      if (!(b.range >= scan.range_min && b.range < scan.range_max)) continue;
-      const double lx = b.range * std::cos(b.angle), ly = b.range * std::sin(b.angle);
+    for (const auto& [lx, ly] : ends) {
       const double z = field_->distance(laser.x + c * lx - s * ly, laser.y + s * lx + c * ly);
       const double pz = params_.laser_z_hit * std::exp(-z * z / denom) + z_rand;
       weight += pz * pz * pz;
@@ -129,6 +153,15 @@ void ParticleFilter::correct(const ScanObservation& scan) {
   else w_slow_ += params_.recovery_alpha_slow * (w_avg - w_slow_);
   if (w_fast_ == 0.0) w_fast_ = w_avg;
   else w_fast_ += params_.recovery_alpha_fast * (w_avg - w_fast_);
+  // A cloud larger than max_particles (global localization's start) is thinned by
+  // resampling only once its weights are carried by no more than max_particles particles
+  // (effective sample size 1 / sum w^2): earlier, drawing max_particles from it would lose
+  // the few particles near the truth, which the summed-cubes model favours only mildly.
+  if (particles_.size() > static_cast<size_t>(params_.max_particles)) {
+    double sum_sq = 0.0;
+    for (const auto& p : particles_) sum_sq += p.weight * p.weight;
+    if (1.0 / sum_sq > params_.max_particles) return;
+  }
   if (++updates_since_resample_ >= params_.resample_interval) {
     resample();
     updates_since_resample_ = 0;
@@ -156,23 +189,42 @@ void ParticleFilter::resample() {
     w_diff = std::max(0.0, 1.0 - w_fast_ / w_slow_);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::unordered_map<BinKey, int, BinHash> bins;
+  // KLD sampling sets how many particles to keep: draws are binned until their count
+  // passes the bound for the bins they fill (Fox 2003, as amcl). The kept particles are then
+  // drawn by low-variance (systematic) resampling (Probabilistic Robotics, table 4.4) rather
+  // than by those independent draws: a hypothesis holding a share w of the weight keeps
+  // floor or ceil of w * n copies, where independent draws lose it with probability
+  // (1 - w)^n. While the cloud is still many-moded (global localization with the Kinect's
+  // narrow view), that chance, repeated every update, loses the true pose.
   std::vector<Particle> next;
   next.reserve(params_.max_particles);
-  while (next.size() < static_cast<size_t>(params_.max_particles)) {
-    Particle p;
+  size_t drawn = 0;
+  while (drawn < static_cast<size_t>(params_.max_particles)) {
+    Pose2 pose;
     if (unit(rng_) < w_diff) {
-      p.pose = randomFreePose();
+      pose = randomFreePose();
+      next.push_back(Particle{pose, 0.0});
     } else {
       const double r = unit(rng_) * sum;
       const size_t i = std::min<size_t>(
           std::upper_bound(cumulative.begin(), cumulative.end(), r) - cumulative.begin(),
           particles_.size() - 1);
-      p.pose = particles_[i].pose;
+      pose = particles_[i].pose;
     }
-    ++bins[binOf(p.pose)];
-    next.push_back(p);
-    if (next.size() >= static_cast<size_t>(params_.min_particles) && next.size() >= kldLimit(bins.size()))
+    ++bins[binOf(pose)];
+    ++drawn;
+    if (drawn >= static_cast<size_t>(params_.min_particles) && drawn >= kldLimit(bins.size()))
       break;
+  }
+  const size_t resampled = drawn - next.size();
+  if (resampled > 0) {
+    const double step = sum / resampled;
+    double target = unit(rng_) * step;
+    size_t i = 0;
+    for (size_t k = 0; k < resampled; ++k, target += step) {
+      while (i + 1 < particles_.size() && cumulative[i] < target) ++i;
+      next.push_back(Particle{particles_[i].pose, 0.0});
+    }
   }
   for (auto& p : next) p.weight = 1.0 / next.size();
   particles_.swap(next);

@@ -75,6 +75,28 @@ TEST(ParticleFilter, GlobalLocalizationFindsTheRobotInAnAsymmetricRoom) {
   EXPECT_LT(positionError(pf, truth), 0.3);
 }
 
+TEST(ParticleFilter, GlobalLocalizationWithTheTurtlebotTuningFindsTheRobot) {
+  // amcl.launch's particle counts: max_particles alone spread over the room leaves the
+  // truth's neighbourhood empty, so the global cloud is larger and thinned once it has
+  // converged enough.
+  const auto map = amcl_lite_test::room();
+  auto field = std::make_shared<const LikelihoodField>(map, 2.0);
+  AmclParams p;
+  p.min_particles = 500;
+  p.max_particles = 2000;
+  p.kld_err = 0.05;
+  p.resample_interval = 1;
+  ParticleFilter pf(p, field, 5);
+  pf.initGlobal();
+  // ln(1 / (1 - kld_z)) per 0.5 m x 0.5 m x 10 degree bin of the room's ~44 m^2 of free space.
+  EXPECT_GT(pf.particles().size(), 20u * static_cast<size_t>(p.max_particles) / 2);
+  Pose2 truth(3.0, 3.0, 2.0), odom(0, 0, 0);
+  drive(&pf, map, &truth, &odom, Pose2(0, 0, 0.2), 34);  // a full turn in place
+  drive(&pf, map, &truth, &odom, Pose2(0.15, 0, 0.0), 6);
+  EXPECT_LT(positionError(pf, truth), 0.3);
+  EXPECT_LE(pf.particles().size(), static_cast<size_t>(p.max_particles));
+}
+
 TEST(ParticleFilter, RefusesInvalidParameters) {
   const auto map = amcl_lite_test::room();
   auto field = std::make_shared<const LikelihoodField>(map, 2.0);

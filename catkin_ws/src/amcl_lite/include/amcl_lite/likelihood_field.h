@@ -30,6 +30,7 @@ class LikelihoodField {
   // Centres (x, y) of every free cell: where global localization may put the robot.
   const std::vector<std::pair<double, double>>& freeCells() const { return free_cells_; }
   double maxDist() const { return max_dist_; }
+  double resolution() const { return map_.resolution; }
 
  private:
   bool cellOf(double x, double y, int* col, int* row) const;

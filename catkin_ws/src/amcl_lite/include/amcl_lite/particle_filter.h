@@ -61,6 +61,7 @@ class ParticleFilter {
  private:
   void resample();
   size_t kldLimit(size_t bins) const;
+  size_t globalParticleCount() const;
   Pose2 randomFreePose();
 
   AmclParams params_;
