@@ -83,7 +83,7 @@ int main(int argc, char** argv) {
     SlamParams p = tuned;
     p.particles = 30;
     rows.push_back({"Turtlebot tuning, 30 particles", 30, 640, p});
-    rows.push_back({"Turtlebot tuning (its particle count)", tuned.particles, 640, tuned});
+    rows.push_back({"Turtlebot tuning (config/turtlebot.yaml)", tuned.particles, 640, tuned});
   }
   if (quick) rows.resize(1);
   if (book) rows = {rows[4]};
