@@ -1,7 +1,11 @@
 """`catkin_make install` (run by scripts/build.sh) gives a working install space: sourcing
 catkin_ws/install/setup.bash alone, the simulator, slam_gmapping, map_server and map_saver run,
-and nothing in it points back into the source tree or the devel space."""
+score_slam scores a bag recorded there with the Turtlebot tuning, make_worlds.py writes worlds
+(into the current folder by default), and nothing in it points back into the source tree or
+the devel space."""
 
+import json
+import math
 import os
 import subprocess
 from pathlib import Path
@@ -87,3 +91,50 @@ def test_simulator_slam_map_saver_and_map_server_from_the_install_space(ros_inst
     ros.start(["rosrun", "map_server", "map_server", str(tmp_path / "made.yaml"), "map:=served"])
     served = ros.echo("/served", count=1, timeout=60)[0]["msg"]
     assert served["info"]["width"] > 0 and served["info"]["height"] > 0
+
+
+def test_make_worlds_writes_into_the_current_folder_by_default(ros_installed, tmp_path):
+    done = ros_installed.run(["rosrun", "bullet_turtlebot", "make_worlds.py"], cwd=tmp_path)
+    assert f"to {tmp_path}" in done.stdout, done.stdout
+    for world in ("playground", "maze", "office", "hospital", "warehouse", "ring", "lab"):
+        assert (tmp_path / f"{world}.yaml").exists() and (tmp_path / f"{world}.pgm").exists()
+    family = tmp_path / "family"
+    ros_installed.run(
+        ["rosrun", "bullet_turtlebot", "make_worlds.py", "--family", "ring"]
+        + ["--seed", "2", str(family)]
+    )
+    assert (family / "ring_2.yaml").exists()
+
+
+@pytest.mark.timeout(500)
+def test_score_slam_runs_slam_offline_with_the_turtlebot_tuning(ros_installed, tmp_path):
+    """A short drive in the office recorded from the install space, scored by score_slam's
+    default path: slam_offline over the bag with the Turtlebot tuning (config/turtlebot.yaml,
+    found through the package, not next to the script)."""
+    ros = ros_installed
+    usage = ros.run(["rosrun", "gmapping_lite", "score_slam", "--help"]).stdout
+    assert "config/turtlebot.yaml" in usage, usage
+    ros.start(["roslaunch", "bullet_turtlebot", "simulator.launch", "world:=office", "speed:=4"])
+    ros.wait_for_topic("/scan", timeout=90)
+    bag = tmp_path / "drive.bag"
+    topics = ["/scan", "/tf", "/tf_static", "/odom", "/base_pose_ground_truth"]
+    recorder = ros.start(["rosbag", "record", "-O", str(bag), *topics])
+
+    def subscribed():
+        subscribers = dict(ros.system_state()[1])
+        return all(any("record" in n for n in subscribers.get(t, [])) for t in topics)
+
+    ros.wait_for(subscribed, 60, "rosbag record to subscribe")
+    driver = ros.start(["rosrun", "gmapping_lite", "waypoint_driver", "--route", "corridor"])
+    driver.wait(timeout=300)
+    assert driver.returncode == 0, ros.output(driver)
+    ros.stop(recorder)
+    ros.wait_for(bag.exists, 60, "the bag to be closed")
+    done = ros.run(
+        ["rosrun", "gmapping_lite", "score_slam", str(bag), "--world", "office", "--json"],
+        timeout=300,
+    )
+    figures = json.loads(done.stdout.strip().splitlines()[-1])
+    # The corridor route's updates (linearUpdate 0.5 m, angularUpdate 0.436 rad: the tuning's).
+    assert figures["poses"] >= 5, figures
+    assert math.isfinite(figures["slam_rms"]) and 0 < figures["near_wall_fraction"] <= 1

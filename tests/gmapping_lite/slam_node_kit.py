@@ -6,10 +6,19 @@ import math
 from pathlib import Path
 
 from roskit import DEBIAN_PYTHON
+from rospkg import RosPack
 
 HERE = Path(__file__).resolve().parent
 ROBOT = [DEBIAN_PYTHON, str(HERE / "synthetic_scans.py")]
 BOOK_BOUNDS = {"xmin": -10, "xmax": 10, "ymin": -10, "ymax": 10}
+
+
+def load_turtlebot_tuning(ros):
+    """Load the Turtlebot tuning (gmapping_lite's config/turtlebot.yaml, as rospack finds it)
+    into slam_gmapping's private namespace, as the launch files do; start_slam's parameters
+    then override it."""
+    tuning = Path(RosPack().get_path("gmapping_lite")) / "config" / "turtlebot.yaml"
+    ros.run(["rosparam", "load", str(tuning), "/slam_gmapping"])
 
 
 def start_slam(ros, **params):

@@ -14,6 +14,7 @@ from slam_node_kit import (  # noqa: E402
     assert_room_mapped,
     cell,
     drive,
+    load_turtlebot_tuning,
     near,
     record_drive,
     seconds,
@@ -57,6 +58,27 @@ def test_book_parameters_map_latched_stamped_and_served(ros):
         assert counts["updates"] > 0
         behind = status["message"].startswith("falling behind")
         assert status["level"] == (1 if behind else 0), status
+
+
+def test_unused_private_parameters_are_named_once_at_start_up(ros):
+    """The Turtlebot tuning file sets only parameters slam_gmapping reads; one it does not
+    read (gmapping's llsamplerange, a misspelt name) is named in one warning at start-up."""
+
+    def started(node):
+        ros.wait_for(lambda: "waiting for scans" in ros.output(node), 60, "slam_gmapping to start")
+        return [line for line in ros.output(node).splitlines() if "does not read" in line]
+
+    load_turtlebot_tuning(ros)
+    node = start_slam(ros)
+    assert started(node) == [], ros.output(node)
+    ros.stop(node)
+    ros.run(["rosparam", "set", "/slam_gmapping/llsamplerange", "0.01"])
+    ros.run(["rosparam", "set", "/slam_gmapping/partcles", "30"])
+    node = start_slam(ros)
+    (warning,) = started(node)
+    assert "ignoring private parameters that gmapping_lite does not read" in warning
+    assert "~llsamplerange" in warning and "~partcles" in warning, warning
+    assert "~srr" not in warning and "~base_frame" not in warning, warning
 
 
 def test_map_to_odom_tf_is_stamped_ahead_of_the_scans(ros):

@@ -3,26 +3,14 @@ chapter 9 set-up end to end. The robot drives a short corridor route; the SLAM p
 (map -> odom composed with odometry) must end near the true pose."""
 
 import math
+import sys
+from pathlib import Path
 
 from map_server.map_io import quaternion_to_yaw
 from rosbook_eval.poses import compose, inverse
 
-TURTLEBOT = {
-    "base_frame": "base_footprint",
-    "maxUrange": 6.0,
-    "minimumScore": 200,
-    "srr": 0.01,
-    "srt": 0.02,
-    "str": 0.01,
-    "stt": 0.02,
-    "linearUpdate": 0.5,
-    "angularUpdate": 0.436,
-    "map_update_interval": 2.0,
-    "xmin": -10,
-    "xmax": 10,
-    "ymin": -10,
-    "ymax": 10,
-}
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from slam_node_kit import load_turtlebot_tuning  # noqa: E402
 
 
 def yaw(q):
@@ -47,7 +35,9 @@ def test_live_mapping_in_the_office_tracks_the_true_pose(ros):
         name="simulator",
     )
     ros.wait_for_topic("scan", timeout=60)
-    for name, value in TURTLEBOT.items():
+    # The Turtlebot tuning with the main job's particle count and map interval.
+    load_turtlebot_tuning(ros)
+    for name, value in {"particles": 30, "map_update_interval": 2.0}.items():
         ros.run(["rosparam", "set", f"/slam_gmapping/{name}", str(value)])
     slam = ros.start(["rosrun", "gmapping_lite", "slam_gmapping"], name="slam_gmapping")
     ros.wait_for_topic("map", timeout=60)

@@ -2,10 +2,14 @@
 """Generate worlds (map_server YAML + PGM, plus primitives) deterministically.
 
     rosrun bullet_turtlebot make_worlds.py [OUTPUT_DIR]
-        the shipped worlds (default: the package's worlds/): playground, maze, office, and
-        hospital, warehouse, ring, lab (each family's seed 1)
+        the shipped worlds: playground, maze, office, and hospital, warehouse, ring, lab (each
+        family's seed 1); to regenerate the package's own, give its source folder:
+        rosrun bullet_turtlebot make_worlds.py catkin_ws/src/bullet_turtlebot/worlds
     rosrun bullet_turtlebot make_worlds.py --family warehouse --seed 3 [--name N] [OUTPUT_DIR]
-        one world of a procedural family: warehouse_3.yaml + .pgm (default: the current folder)
+        one world of a procedural family: warehouse_3.yaml + .pgm
+
+OUTPUT_DIR defaults to the current folder (never the installed package, which may not be
+writable and is not where the shipped worlds are kept).
 
 The same arguments always write the same bytes. A family world is checked before it is
 written: the start has room around it and all free space is reachable from it.
@@ -18,12 +22,10 @@ from pathlib import Path
 from bullet_turtlebot import shipped_worlds, world_families
 from bullet_turtlebot.world_file import write_world
 
-PACKAGE_WORLDS = Path(__file__).resolve().parent.parent / "worlds"
-
 
 def parse_args(argv):
     parser = argparse.ArgumentParser(prog="make_worlds.py", description=__doc__.split("\n")[0])
-    parser.add_argument("out_dir", nargs="?", help="output folder")
+    parser.add_argument("out_dir", nargs="?", default=".", help="output folder (default: .)")
     parser.add_argument("--family", choices=list(world_families.FAMILIES))
     parser.add_argument("--seed", type=int, default=1, help="the family's seed (default 1)")
     parser.add_argument("--name", help="file name without extension (default FAMILY_SEED)")
@@ -64,14 +66,14 @@ def main(argv=None):
         path = checked(world, out_dir)
         print(f"wrote {path} ({world.comment.split(': ', 1)[1]})")
         return
-    out_dir = Path(args.out_dir) if args.out_dir else PACKAGE_WORLDS
+    out_dir = Path(args.out_dir or ".")
     make_folder(out_dir)
     for make in shipped_worlds.HAND_MADE:
         write_world(out_dir, make())
     for family in world_families.SHIPPED:
         checked(world_families.generate(family, 1, name=family), out_dir)
     names = [make.__name__ for make in shipped_worlds.HAND_MADE] + list(world_families.SHIPPED)
-    print(f"wrote {', '.join(names)} to {out_dir}")
+    print(f"wrote {', '.join(names)} to {out_dir.resolve()}")
 
 
 if __name__ == "__main__":

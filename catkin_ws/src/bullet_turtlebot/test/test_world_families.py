@@ -97,7 +97,8 @@ def test_shipped_family_worlds_are_what_the_generator_writes(family, tmp_path):
     for suffix in (".yaml", ".pgm"):
         shipped = PACKAGE / "worlds" / f"{family}{suffix}"
         assert shipped.read_bytes() == (tmp_path / f"{family}{suffix}").read_bytes(), (
-            "worlds/ is stale: rosrun bullet_turtlebot make_worlds.py"
+            "worlds/ is stale: "
+            "rosrun bullet_turtlebot make_worlds.py catkin_ws/src/bullet_turtlebot/worlds"
         )
 
 

@@ -10,8 +10,11 @@
 #include <string>
 #include <vector>
 
+#include <ros/package.h>
+
 #include "gmapping_lite/particle_filter.h"
 #include "gmapping_lite/synthetic.h"
+#include "gmapping_lite/tuning_file.h"
 
 using namespace gmapping_lite;  // NOLINT: a program, not a header
 
@@ -30,15 +33,20 @@ struct Row {
   SlamParams params;
 };
 
+// The Turtlebot tuning: the package's config/turtlebot.yaml, found as rosrun finds the program.
 SlamParams turtlebot() {
   SlamParams p;
-  p.particles = 80;
-  p.linear_update = 0.5;
-  p.angular_update = 0.436;
-  p.minimum_score = 200;
-  p.motion = {0.01, 0.02, 0.01, 0.02};
-  p.matcher.max_range = 8.0;
-  p.matcher.max_urange = 6.0;
+  const std::string package = ros::package::getPath("gmapping_lite");
+  if (package.empty()) {
+    std::fprintf(stderr, "slam_bench: cannot find the package gmapping_lite: source the "
+                         "workspace's setup.bash first\n");
+    std::exit(2);
+  }
+  const std::string problem = loadTuning(package + "/config/turtlebot.yaml", &p);
+  if (!problem.empty()) {
+    std::fprintf(stderr, "slam_bench: %s\n", problem.c_str());
+    std::exit(2);
+  }
   return p;
 }
 
@@ -108,10 +116,11 @@ int main(int argc, char** argv) {
     rows.push_back({"book: angular/linearUpdate 0.1, lskip 10", 30, 640, p});
   }
   {
-    SlamParams p = turtlebot();
+    const SlamParams tuned = turtlebot();
+    SlamParams p = tuned;
     p.particles = 30;
     rows.push_back({"Turtlebot tuning, 30 particles", 30, 640, p});
-    rows.push_back({"Turtlebot tuning (80 particles)", 80, 640, turtlebot()});
+    rows.push_back({"Turtlebot tuning (config/turtlebot.yaml)", tuned.particles, 640, tuned});
   }
   if (quick) rows.resize(1);
   if (book) rows = {rows[4]};

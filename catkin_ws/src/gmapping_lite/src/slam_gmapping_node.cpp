@@ -21,6 +21,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/GetMap.h>
@@ -41,6 +42,7 @@
 #include "gmapping_lite/param_table.h"
 #include "gmapping_lite/particle_filter.h"
 #include "gmapping_lite/scan_input.h"
+#include "gmapping_lite/tuning_file.h"
 
 namespace gmapping_lite {
 
@@ -57,7 +59,8 @@ class SlamGmappingNode {
     private_.param("map_update_interval", map_update_interval_, 5.0);
     private_.param("transform_publish_period", transform_publish_period_, 0.05);
     private_.param("tf_wait", tf_wait_, 0.5);  // wall seconds to wait for odometry tf
-    private_.param("tilt_tolerance", tilt_tolerance_, 0.1);
+    private_.param("tilt_tolerance", tilt_tolerance_, 0.1);  // each name in nodeParamNames()
+    warnUnusedParams();
     std::string problem;
     for (const auto& e : paramTable()) {
       double value;
@@ -108,6 +111,22 @@ class SlamGmappingNode {
   }
 
  private:
+  // Once, at start-up: a private parameter the node does not read (a misspelt name, or one of
+  // gmapping's that gmapping_lite has no use for) would otherwise be ignored silently.
+  void warnUnusedParams() const {
+    std::vector<std::string> all, mine;
+    if (!ros::param::getParamNames(all)) return;
+    const std::string prefix = private_.getNamespace() + "/";
+    for (const std::string& name : all)
+      if (name.rfind(prefix, 0) == 0) mine.push_back(name.substr(prefix.size()));
+    std::string names;
+    for (const std::string& name : unusedParams(mine)) names += (names.empty() ? "~" : ", ~") + name;
+    if (!names.empty())
+      ROS_WARN("slam_gmapping: ignoring private parameters that gmapping_lite does not read: "
+               "%s (check the spelling; gmapping_lite's README lists those it reads)",
+               names.c_str());
+  }
+
   static std::string stripSlash(const std::string& frame) {
     return !frame.empty() && frame[0] == '/' ? frame.substr(1) : frame;
   }

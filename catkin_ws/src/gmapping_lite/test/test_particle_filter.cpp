@@ -4,6 +4,7 @@
 
 #include "gmapping_lite/particle_filter.h"
 #include "gmapping_lite/synthetic.h"
+#include "gmapping_lite/tuning_file.h"
 
 using namespace gmapping_lite;  // NOLINT: test file
 
@@ -19,15 +20,12 @@ double rmsError(const std::vector<Pose2>& a, const std::vector<Pose2>& b) {
   return std::sqrt(s / double(a.size()));
 }
 
+// The Turtlebot tuning (config/turtlebot.yaml) with 30 particles, as the simulated runs use it.
 SlamParams turtlebotParams() {
   SlamParams p;
+  const std::string problem = loadTuning(TURTLEBOT_TUNING, &p);
+  if (!problem.empty()) ADD_FAILURE() << problem;
   p.particles = 30;
-  p.linear_update = 0.5;
-  p.angular_update = 0.436;
-  p.matcher.max_range = 8.0;
-  p.matcher.max_urange = 6.0;
-  p.minimum_score = 200;
-  p.motion = {0.01, 0.02, 0.01, 0.02};
   return p;
 }
 

@@ -5,7 +5,7 @@ import importlib.util
 from pathlib import Path
 
 
-def test_score_slam_starts_from_the_turtlebot_launch_files_tuning():
+def test_score_slam_starts_from_the_packages_turtlebot_tuning_file():
     from importlib.machinery import SourceFileLoader
 
     script = Path(__file__).resolve().parent.parent / "scripts" / "score_slam"
@@ -19,3 +19,5 @@ def test_score_slam_starts_from_the_turtlebot_launch_files_tuning():
     assert tuning["linearUpdate"] == "0.5" and tuning["angularUpdate"] == "0.436"
     assert tuning["maxUrange"] == "6.0" and tuning["minimumScore"] == "200"
     assert not {"particles", "base_frame", "odom_frame", "map_update_interval"} & set(tuning)
+    # Found by package (rospkg), not next to the script: the same from the install space.
+    assert score_slam.tuning_file().parts[-3:] == ("gmapping_lite", "config", "turtlebot.yaml")
