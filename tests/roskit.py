@@ -63,7 +63,16 @@ class RosGraph:
         self.core = self.start(cmd, name="rosmaster")
         self.wait_for_master(until=lambda master: master.getPid(CALLER_ID)[0] == 1)
         self.master().setParam(CALLER_ID, "/run_id", str(uuid.uuid1()))
-        self.start(["rosrun", "rosout", "rosout", "__name:=rosout"], name="rosout")
+        rosout = self.start(["rosrun", "rosout", "rosout", "__name:=rosout"], name="rosout")
+        # Up before the test goes on, as a test expects of roscore: else rosout could read a
+        # /use_sim_time the test sets and add itself to /clock's subscribers.
+        self.wait_for_master(
+            until=lambda master: (
+                rosout.poll() is None
+                and ["/rosout_agg", "rosgraph_msgs/Log"]
+                in master.getPublishedTopics(CALLER_ID, "")[2]
+            )
+        )
 
     # -- processes ---------------------------------------------------------------
     def start(self, cmd, name=None, stdin=None, env=None, cwd=None):
@@ -299,11 +308,37 @@ def _safe(label):
     return "".join(c if c.isalnum() or c in "-_." else "_" for c in str(label))[:40]
 
 
+def descendants(pid):
+    """{pid: command line} of every process below `pid` (from /proc)."""
+    children = {}
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            ppid = int(stat.read_text().rsplit(")", 1)[1].split()[1])
+            cmdline = (stat.parent / "cmdline").read_bytes().replace(b"\0", b" ").decode()
+        except (OSError, IndexError, ValueError):
+            continue  # a process that ended while we looked
+        children.setdefault(ppid, []).append((int(stat.parent.name), cmdline))
+    found, todo = {}, [pid]
+    while todo:
+        for child, cmdline in children.get(todo.pop(), []):
+            found[child] = cmdline
+            todo.append(child)
+    return found
+
+
 def _kill_group(proc):
+    # roslaunch starts each node in a session of its own: killed with roslaunch's group, they
+    # would live on (waiting for their master) unless killed by pid as well.
+    below = descendants(proc.pid)
     try:
         os.killpg(proc.pid, signal.SIGKILL)
     except ProcessLookupError:
         pass
+    for pid in below:
+        try:
+            os.kill(pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
     try:
         proc.wait(timeout=5)
     except subprocess.TimeoutExpired:

@@ -116,7 +116,7 @@ PARAM_CASES = {
         "wanderbot",
         "wander.py",
         ["_min_range:=0"],
-        ["~min_range must be finite and > 0, got 0"],
+        ["~min_range must be > 0, got 0"],
     ),
     "move_base robot_radius -1": (
         "move_base_lite",

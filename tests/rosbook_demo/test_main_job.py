@@ -14,7 +14,7 @@ import pytest
 
 REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(REPO / "tests"))
-from roskit import ros_environment  # noqa: E402
+from roskit import descendants, ros_environment  # noqa: E402
 
 SIM_SECONDS = 120
 
@@ -94,24 +94,6 @@ def test_demo_rejects_nonsense_arguments(tmp_path):
     )
     assert done.returncode == 2
     assert "--sim-seconds" in done.stderr
-
-
-def descendants(pid):
-    """{pid: command line} of every process below `pid` (from /proc)."""
-    children = {}
-    for stat in Path("/proc").glob("[0-9]*/stat"):
-        try:
-            fields = stat.read_text().rsplit(")", 1)[1].split()
-            cmdline = (stat.parent / "cmdline").read_bytes().replace(b"\0", b" ").decode()
-        except (OSError, IndexError):
-            continue  # a process that ended while we looked
-        children.setdefault(int(fields[1]), []).append((int(stat.parent.name), cmdline))
-    found, todo = {}, [pid]
-    while todo:
-        for child, cmdline in children.get(todo.pop(), []):
-            found[child] = cmdline
-            todo.append(child)
-    return found
 
 
 @pytest.mark.slow
