@@ -4,6 +4,7 @@ screenshot must show the map being built (free space and walls on unknown), the 
 it near the map origin, and the laser scan lying on the map's walls: map → odom →
 base_footprint → camera_depth_frame all line up on screen."""
 
+import math
 import sys
 from pathlib import Path
 
@@ -15,6 +16,10 @@ import rviz_checks as rc  # noqa: E402
 from rviz_checks import rs  # noqa: E402
 
 PX_PER_M = 30.0  # mapping.rviz's TopDownOrtho scale
+LINEAR, ANGULAR = 0.2, 0.4  # the teleop command: a circle of radius LINEAR / ANGULAR = 0.5 m
+# m: the robot stays within the circle's diameter of its start (the map origin); on top of
+# that, SLAM's error in so short a run and the drawn model's centroid against base_link.
+NEAR_ORIGIN = 2 * LINEAR / ANGULAR + 0.25
 
 
 def dilate(mask, radius):
@@ -36,7 +41,7 @@ def test_mapping_view_while_slam_builds_the_map(ros):
     slam = ["rosrun", "gmapping_lite", "slam_gmapping", "_map_update_interval:=2.0"]
     slam += [f"_{k}:={v}" for k, v in (("xmin", -15), ("ymin", -15), ("xmax", 15), ("ymax", 15))]
     ros.start(slam, name="slam_gmapping")
-    twist = "{linear: {x: 0.2}, angular: {z: 0.4}}"  # a 0.5 m circle around the start
+    twist = f"{{linear: {{x: {LINEAR}}}, angular: {{z: {ANGULAR}}}}}"
     ros.start(
         ["rostopic", "pub", "-r", "10", "/cmd_vel_mux/input/teleop", "geometry_msgs/Twist", twist],
         name="teleop",
@@ -57,10 +62,10 @@ def test_mapping_view_while_slam_builds_the_map(ros):
     assert counts["free"] > 20000, "free space missing: " + what
     assert counts["wall"] > 300, "walls missing: " + what
     assert counts["unknown"] > counts["free"], "unknown should surround the map: " + what
-    # The map frame starts at the robot's first pose; the circle keeps it within 1 m.
+    # The map frame starts at the robot's first pose; the circle keeps it near there.
     cx, cy = rc.view_centre(view)
     robot_x, robot_y = rs.centroid(masks["robot"])
-    assert abs(robot_x - cx) < PX_PER_M and abs(robot_y - cy) < PX_PER_M, what
+    assert math.hypot(robot_x - cx, robot_y - cy) < NEAR_ORIGIN * PX_PER_M, what
     # Where the map is already known, the scan is drawn over the walls it hits.
     seen, on_walls = scan_on_walls(masks)
     assert seen > 100, "no scan over the mapped area: " + what
