@@ -177,12 +177,7 @@ class RosGraph:
         return state
 
     def wait_for(self, predicate, timeout=20, what="condition", interval=0.1):
-        deadline = time.monotonic() + timeout
-        while time.monotonic() < deadline:
-            if predicate():
-                return
-            time.sleep(interval)
-        raise AssertionError(f"timed out after {timeout} s waiting for {what}")
+        wait_until(predicate, timeout, what, interval)
 
     def topics(self):
         """Every topic with a publisher or a subscriber (what `rostopic list` prints)."""
@@ -306,6 +301,16 @@ class _QuickTransport(xmlrpc.client.Transport):
 
 def _safe(label):
     return "".join(c if c.isalnum() or c in "-_." else "_" for c in str(label))[:40]
+
+
+def wait_until(predicate, timeout=20, what="condition", interval=0.1):
+    """Poll `predicate` until true; a wall-time limit, only there to catch a hang."""
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        if predicate():
+            return
+        time.sleep(interval)
+    raise AssertionError(f"timed out after {timeout} s waiting for {what}")
 
 
 def descendants(pid):

@@ -13,8 +13,6 @@ import shutil
 import signal
 import subprocess
 import sys
-import time
-from pathlib import Path
 
 import pytest
 from map_server.map_io import quaternion_to_yaw
@@ -22,7 +20,7 @@ from rosbook_eval.grids import near_wall_share, occupied_points
 from rosbook_eval.poses import compose, inverse
 from rosbook_eval.scoring import DEFAULT_TOLERANCE, place_grid
 from rosbook_eval.truth import TRUTH_RESOLUTION, load_grid
-from roskit import PROBE, _kill_group, read_jsonl, ros_environment
+from roskit import PROBE, RosGraph, _kill_group, read_jsonl, ros_environment, wait_until
 
 SUBNET = "10.77.0"  # private; each namespace has its own stack, so runs do not clash
 HOST_A, HOST_B = f"{SUBNET}.1", f"{SUBNET}.2"
@@ -152,17 +150,11 @@ def two_hosts(tmp_path):
         run_ip("link", "del", f"{tag}va")  # only there if it never reached a namespace
 
 
-def wait_for(predicate, what, timeout=90, interval=0.5):
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        if predicate():
-            return
-        time.sleep(interval)
-    raise AssertionError(f"timed out after {timeout} s waiting for {what}")
+def wait_for(predicate, what, timeout=90):
+    wait_until(predicate, timeout, what, interval=0.5)
 
 
-def output(proc):
-    return Path(proc.log_path).read_text(errors="replace")
+output = RosGraph.output  # a started process's log
 
 
 def yaw(q):
