@@ -48,8 +48,12 @@ def _is_fast(nodeid):
 
 
 def pytest_collection_modifyitems(config, items):
-    if os.environ.get("ROSBOOK_TIER") != "fast":
-        return
+    if os.environ.get("ROSBOOK_TIER") == "fast":
+        _keep_fast(config, items)
+    _long_modules_first(items)
+
+
+def _keep_fast(config, items):
     unmatched = [
         name for name in FAST_INTEGRATION if not any(_is_fast_match(i.nodeid, name) for i in items)
     ]
@@ -62,3 +66,32 @@ def pytest_collection_modifyitems(config, items):
 
 def _is_fast_match(nodeid, name):
     return nodeid == name or nodeid.startswith(name + "::")
+
+
+# -- order ----------------------------------------------------------------------------------
+# With several workers (pytest-xdist hands tests out in collection order), a long test that
+# starts last runs alone while the other workers idle. The modules holding the tests that took
+# longest in a recorded run (tests/durations.txt, see tests/tools/record_durations.py) start
+# first, longest first; a module's own order is kept (its tests may share a roscore), and
+# tests the file does not name keep their order after them. A stale file only costs time.
+DURATIONS = Path(__file__).resolve().parent / "durations.txt"
+
+
+def _recorded_durations():
+    if not DURATIONS.exists():
+        return {}
+    found = {}
+    for line in DURATIONS.read_text().splitlines():
+        seconds, _, nodeid = line.partition(" ")
+        if seconds and not seconds.startswith("#"):
+            found[nodeid.strip()] = float(seconds)
+    return found
+
+
+def _long_modules_first(items):
+    recorded = _recorded_durations()
+    longest = {}
+    for item in items:
+        module = item.nodeid.split("::", 1)[0]
+        longest[module] = max(longest.get(module, 0.0), recorded.get(item.nodeid, 0.0))
+    items.sort(key=lambda item: -longest[item.nodeid.split("::", 1)[0]])

@@ -19,6 +19,7 @@ from pathlib import Path
 
 REPO = Path(__file__).resolve().parent.parent
 PROBE = Path(__file__).resolve().parent / "tools" / "topic_probe.py"
+CLOCK_WATCH = PROBE.with_name("clock_watch.py")
 DEBIAN_PYTHON = "/usr/bin/python3"
 CALLER_ID = "/roskit"
 
@@ -56,6 +57,7 @@ class RosGraph:
         self.env = ros_environment(self.port, base_env)
         self.procs = []
         self._log_index = 0
+        self._clock_file = None
         # What roscore runs (its launch file roslaunch/roscore.xml): rosmaster --core -w 3, the
         # /run_id roslaunch sets, and rosout; started directly, because roscore's roslaunch
         # around them costs most of a CPU second per test on a two-core machine.
@@ -130,21 +132,27 @@ class RosGraph:
         return proc.returncode
 
     def close(self, timeout=5):
-        """Ctrl-C to every node at once (then the roscore), each group killed if it is not
-        gone within `timeout` wall seconds: one slow node does not hold up the others."""
-        nodes = [p for p in self.procs if p is not self.core and p.poll() is None]
-        for proc in nodes:
+        """End the test's graph: every process it started, with what roslaunch started below
+        them, killed at once. The test is over, so nothing is left to hear a clean Ctrl-C
+        (each rospy node would spend most of a second on it), and the master goes too: no
+        registration outlives it. Tests that check a node's Ctrl-C use `stop`."""
+        alive = [p for p in self.procs if p.poll() is None]
+        below = descendants_of([p.pid for p in alive])
+        for proc in alive:
             try:
-                os.killpg(proc.pid, signal.SIGINT)
+                os.killpg(proc.pid, signal.SIGKILL)
             except ProcessLookupError:
                 pass
-        deadline = time.monotonic() + timeout
-        for proc in nodes:
+        for pid in below:
             try:
-                proc.wait(timeout=max(0.0, deadline - time.monotonic()))
+                os.kill(pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+        for proc in alive:
+            try:
+                proc.wait(timeout=timeout)
             except subprocess.TimeoutExpired:
-                _kill_group(proc)
-        self.stop(self.core, timeout=timeout)
+                pass  # a zombie's parent is gone: nothing more a test can do
 
     # -- waiting -----------------------------------------------------------------
     def master(self):
@@ -210,6 +218,27 @@ class RosGraph:
             probe.wait_ready()
         return probe
 
+    def sim_time(self, timeout=60):
+        """The newest /clock in seconds, one that arrived after this call (as `echo` would
+        give). The first call starts a watcher node (tools/clock_watch.py) that keeps it in a
+        file, so a test polling the clock does not start a probe process per look."""
+        if self._clock_file is None:
+            self._clock_file = self.workdir / f"clock-{self._log_index + 1:02d}.txt"
+            self.start([DEBIAN_PYTHON, str(CLOCK_WATCH), str(self._clock_file)], name="clock_watch")
+        before = _read_clock(self._clock_file)
+        since = before[0] if before else 0
+        found = []
+
+        def newer():
+            now = _read_clock(self._clock_file)
+            if now and now[0] > since:
+                found.append(now[1])
+                return True
+            return False
+
+        self.wait_for(newer, timeout, "a /clock message", interval=0.02)
+        return found[-1]
+
     def echo(self, topic, count=1, timeout=30):
         """Block until `count` messages of `topic` arrive; return them as dicts."""
         probe = self.probe([topic], count=count, timeout=timeout)
@@ -260,6 +289,15 @@ class Probe:
     def stop(self):
         self.graph.stop(self.proc)
         return self.messages()
+
+
+def _read_clock(path):
+    """(sequence, seconds) from clock_watch's file, or None before its first write."""
+    try:
+        sequence, seconds = Path(path).read_text().split()
+    except (FileNotFoundError, ValueError):
+        return None
+    return int(sequence), float(seconds)
 
 
 def read_jsonl(path):
@@ -315,6 +353,11 @@ def wait_until(predicate, timeout=20, what="condition", interval=0.1):
 
 def descendants(pid):
     """{pid: command line} of every process below `pid` (from /proc)."""
+    return descendants_of([pid])
+
+
+def descendants_of(pids):
+    """{pid: command line} of every process below any of `pids` (one look at /proc)."""
     children = {}
     for stat in Path("/proc").glob("[0-9]*/stat"):
         try:
@@ -323,7 +366,7 @@ def descendants(pid):
         except (OSError, IndexError, ValueError):
             continue  # a process that ended while we looked
         children.setdefault(ppid, []).append((int(stat.parent.name), cmdline))
-    found, todo = {}, [pid]
+    found, todo = {}, list(pids)
     while todo:
         for child, cmdline in children.get(todo.pop(), []):
             found[child] = cmdline

@@ -82,7 +82,7 @@ def secs(value):
 
 
 def sim_time(ros):
-    return secs(ros.echo("/clock", count=1)[0]["msg"]["clock"])
+    return ros.sim_time()
 
 
 def wait_sim_seconds(ros, seconds, timeout=60):
