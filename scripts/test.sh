@@ -9,7 +9,8 @@ source "$here/catkin_ws/devel/setup.bash"
 cd "$here"
 shopt -s nullglob
 unit_dirs=(catkin_ws/src/*/test)
-# Three workers on two cores: most of a test is waiting (process start-up, roscore, sim
-# time), and the tests do not depend on load (sim time, held clocks).
-workers=${ROSBOOK_TEST_WORKERS:-3}
+# Two workers per core: most of a test is waiting (process start-up, roscore, simulations
+# that run at a set speed), so with three workers on two cores the load stayed near 1; and the
+# tests do not depend on load (sim time, held clocks).
+workers=${ROSBOOK_TEST_WORKERS:-$((2 * $(nproc)))}
 exec /usr/bin/python3 -m pytest -n "$workers" tests "${unit_dirs[@]}" "$@"
