@@ -1,5 +1,6 @@
 #include "gmapping_lite/loop_closure.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -8,34 +9,40 @@ namespace gmapping_lite {
 
 namespace {
 
-// Covariance of an information matrix (inverse), or false when it is singular.
-bool invert3(const double m[3][3], double out[3][3]) {
-  const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                     m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                     m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-  if (!std::isfinite(det) || std::fabs(det) < 1e-30) return false;
-  out[0][0] = (m[1][1] * m[2][2] - m[1][2] * m[2][1]) / det;
-  out[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) / det;
-  out[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) / det;
-  out[1][0] = (m[1][2] * m[2][0] - m[1][0] * m[2][2]) / det;
-  out[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) / det;
-  out[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) / det;
-  out[2][0] = (m[1][0] * m[2][1] - m[1][1] * m[2][0]) / det;
-  out[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) / det;
-  out[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) / det;
-  return true;
+// Per-axis position variance and heading variance of an information matrix, through its
+// eigen-decomposition: a covariance is never negative. A direction the information leaves
+// (numerically) unconstrained, an eigenvalue below double precision's relative resolution of
+// the largest (a scan along a corridor, a loop edge of a few collinear points), gets an
+// infinite variance on the axes it touches. Inverting by cofactors instead turned such a
+// near-singular matrix into a negative variance, whose square root then made every later
+// loop search window NaN.
+void variances(const Information& info, double* xy, double* theta) {
+  Eigen::Matrix3d m;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) m(i, j) = 0.5 * (info.m[i][j] + info.m[j][i]);
+  *xy = *theta = std::numeric_limits<double>::infinity();
+  if (!m.allFinite()) return;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(m);
+  if (eigen.info() != Eigen::Success) return;
+  const Eigen::Vector3d& lambda = eigen.eigenvalues();  // ascending
+  const Eigen::Matrix3d& v = eigen.eigenvectors();
+  if (!(lambda(2) > 0.0)) return;
+  const double resolvable = lambda(2) * std::numeric_limits<double>::epsilon() * 16.0;
+  double c[3] = {0.0, 0.0, 0.0};
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) {
+      const double share = v(i, j) * v(i, j);
+      if (share == 0.0) continue;
+      c[i] = lambda(j) > resolvable ? c[i] + share / lambda(j)
+                                    : std::numeric_limits<double>::infinity();
+    }
+  *xy = 0.5 * (c[0] + c[1]);
+  *theta = c[2];
 }
 
-// Per-axis position variance and heading variance of an information matrix.
-void variances(const Information& info, double* xy, double* theta) {
-  double c[3][3];
-  if (!invert3(info.m, c)) {
-    *xy = *theta = std::numeric_limits<double>::infinity();
-    return;
-  }
-  *xy = 0.5 * (c[0][0] + c[1][1]);
-  *theta = c[2][2];
-}
+// Variance a heading variance adds at the end of a lever arm of squared length l2 (none when
+// there is no arm: an infinite heading variance times a turn on the spot is no NaN).
+double swing(double var_theta, double l2) { return l2 > 0.0 ? var_theta * l2 : 0.0; }
 
 }  // namespace
 
@@ -64,19 +71,19 @@ void relativeUncertainty(const std::vector<const TrajectoryNode*>& chain,
   std::vector<double>& vth = *var_theta;
   for (int k = n - 2; k >= 0; --k) {
     const double l = length(k, k + 1);
-    vxy[k] = vxy[k + 1] + step_xy[k + 1] + vth[k + 1] * l * l;
+    vxy[k] = vxy[k + 1] + step_xy[k + 1] + swing(vth[k + 1], l * l);
     vth[k] = vth[k + 1] + step_theta[k + 1];
     for (const PoseEdge* e : from[static_cast<std::size_t>(k)]) {
       double exy, eth;
       variances(e->information, &exy, &eth);
       const double l2 = std::pow(length(k, e->to), 2);
-      vxy[k] = std::min(vxy[k], vxy[e->to] + exy + vth[e->to] * l2);
+      vxy[k] = std::min(vxy[k], vxy[e->to] + exy + swing(vth[e->to], l2));
       vth[k] = std::min(vth[k], vth[e->to] + eth);
     }
   }
   for (int k = 1; k < n; ++k) {
     const double l = length(k - 1, k);
-    vxy[k] = std::min(vxy[k], vxy[k - 1] + step_xy[k] + vth[k - 1] * l * l);
+    vxy[k] = std::min(vxy[k], vxy[k - 1] + step_xy[k] + swing(vth[k - 1], l * l));
     vth[k] = std::min(vth[k], vth[k - 1] + step_theta[k]);
   }
 }
