@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -77,10 +78,15 @@ class RayFan {
     int solid;
     double min_distance;  // horizontal distance from the origin to the solid's footprint
   };
+  int bins() const { return static_cast<int>(bin_start_.size()) - 1; }
+  const Entry* bin_begin(int bin) const { return entries_.data() + bin_start_[static_cast<size_t>(bin)]; }
+  const Entry* bin_end(int bin) const { return entries_.data() + bin_start_[static_cast<size_t>(bin) + 1]; }
+
   const World& world_;
   Eigen::Vector3d origin_;
   double yaw_, half_fov_, bin_width_;
-  std::vector<std::vector<Entry>> bins_;  // per azimuth bin, nearest first
+  std::vector<Entry> entries_;              // per azimuth bin, nearest first, bin after bin
+  std::vector<std::uint32_t> bin_start_;    // bin b is entries_[bin_start_[b], bin_start_[b + 1])
   size_t candidates_ = 0;
 };
 
