@@ -13,18 +13,38 @@ namespace {
 
 btVector3 bt(const Eigen::Vector3d& v) { return btVector3(btScalar(v.x()), btScalar(v.y()), btScalar(v.z())); }
 
-inline bool intersect_box(const Solid& s, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
-                   double max_distance, double* distance, Eigen::Vector3d* normal) {
+inline SolidView view_solid(const Solid& s, const Eigen::Vector3d& origin) {
+  SolidView v;
+  v.solid = &s;
+  if (s.kind == Solid::kBox) {
+    const double c = s.cos_yaw, sn = s.sin_yaw;
+    const Eigen::Vector3d rel = origin - s.center;
+    // World to box frame: rotate by -yaw. Axis-aligned, the rotation would multiply by exactly
+    // 1 and 0, which changes at most the sign of a zero, and nothing below depends on it.
+    v.aligned = c == 1.0 && sn == 0.0;
+    v.o[0] = v.aligned ? rel.x() : c * rel.x() + sn * rel.y();
+    v.o[1] = v.aligned ? rel.y() : -sn * rel.x() + c * rel.y();
+    v.o[2] = rel.z();
+  } else {
+    const double r = s.half.x();
+    const double bottom = s.center.z() - s.half.z();
+    const double top = s.center.z() + s.half.z();
+    v.o[0] = origin.x() - s.center.x();
+    v.o[1] = origin.y() - s.center.y();
+    v.o[2] = origin.z();
+    v.c = v.o[0] * v.o[0] + v.o[1] * v.o[1] - r * r;
+    v.inside = v.c <= 0 && origin.z() >= bottom && origin.z() <= top;
+  }
+  return v;
+}
+
+inline bool intersect_box(const SolidView& v, const Eigen::Vector3d& dir, double max_distance, double* distance,
+                          Eigen::Vector3d* normal) {
+  const Solid& s = *v.solid;
   const double c = s.cos_yaw, sn = s.sin_yaw;
-  const Eigen::Vector3d rel = origin - s.center;
-  // World to box frame: rotate by -yaw. Most boxes (every wall from the grid) are axis-aligned:
-  // there the rotation multiplies by exactly 1 and 0, which changes at most the sign of a
-  // zero, and nothing below depends on that sign.
-  const bool aligned = c == 1.0 && sn == 0.0;
-  const double o[3] = {aligned ? rel.x() : c * rel.x() + sn * rel.y(),
-                       aligned ? rel.y() : -sn * rel.x() + c * rel.y(), rel.z()};
-  const double d[3] = {aligned ? dir.x() : c * dir.x() + sn * dir.y(),
-                       aligned ? dir.y() : -sn * dir.x() + c * dir.y(), dir.z()};
+  const double* o = v.o;
+  const double d[3] = {v.aligned ? dir.x() : c * dir.x() + sn * dir.y(),
+                       v.aligned ? dir.y() : -sn * dir.x() + c * dir.y(), dir.z()};
   double t_enter = -std::numeric_limits<double>::infinity();
   double t_exit = std::numeric_limits<double>::infinity();
   int axis = -1;
@@ -54,14 +74,14 @@ inline bool intersect_box(const Solid& s, const Eigen::Vector3d& origin, const E
   return true;
 }
 
-inline bool intersect_cylinder(const Solid& s, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
-                        double max_distance, double* distance, Eigen::Vector3d* normal) {
+inline bool intersect_cylinder(const SolidView& v, const Eigen::Vector3d& dir, double max_distance,
+                               double* distance, Eigen::Vector3d* normal) {
+  if (v.inside) return false;
+  const Solid& s = *v.solid;
   const double r = s.half.x();
   const double bottom = s.center.z() - s.half.z();
   const double top = s.center.z() + s.half.z();
-  const double ox = origin.x() - s.center.x(), oy = origin.y() - s.center.y();
-  const double c = ox * ox + oy * oy - r * r;
-  if (c <= 0 && origin.z() >= bottom && origin.z() <= top) return false;  // inside
+  const double ox = v.o[0], oy = v.o[1], oz = v.o[2], c = v.c;
   double best = std::numeric_limits<double>::infinity();
   const double a = dir.x() * dir.x() + dir.y() * dir.y();
   if (a > 1e-12) {
@@ -69,7 +89,7 @@ inline bool intersect_cylinder(const Solid& s, const Eigen::Vector3d& origin, co
     const double disc = b * b - 4 * a * c;
     if (disc >= 0) {
       const double t = (-b - std::sqrt(disc)) / (2 * a);
-      const double z = origin.z() + t * dir.z();
+      const double z = oz + t * dir.z();
       if (t >= 0 && z >= bottom && z <= top) {
         best = t;
         *normal = Eigen::Vector3d((ox + t * dir.x()) / r, (oy + t * dir.y()) / r, 0.0);
@@ -78,7 +98,7 @@ inline bool intersect_cylinder(const Solid& s, const Eigen::Vector3d& origin, co
   }
   for (const double cap : {top, bottom}) {
     if (std::abs(dir.z()) < 1e-12) break;
-    const double t = (cap - origin.z()) / dir.z();
+    const double t = (cap - oz) / dir.z();
     if (t < 0 || t >= best) continue;
     const double px = ox + t * dir.x(), py = oy + t * dir.y();
     if (px * px + py * py <= r * r) {
@@ -91,11 +111,16 @@ inline bool intersect_cylinder(const Solid& s, const Eigen::Vector3d& origin, co
   return true;
 }
 
+inline bool hit_view(const SolidView& v, const Eigen::Vector3d& dir, double max_distance, double* distance,
+                     Eigen::Vector3d* normal) {
+  return v.solid->kind == Solid::kBox ? intersect_box(v, dir, max_distance, distance, normal)
+                                      : intersect_cylinder(v, dir, max_distance, distance, normal);
+}
+
 // intersect_solid, inlinable into the ray loops (the exported one is called through the PLT).
 inline bool hit_solid(const Solid& solid, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
                       double max_distance, double* distance, Eigen::Vector3d* normal) {
-  return solid.kind == Solid::kBox ? intersect_box(solid, origin, dir, max_distance, distance, normal)
-                                   : intersect_cylinder(solid, origin, dir, max_distance, distance, normal);
+  return hit_view(view_solid(solid, origin), dir, max_distance, distance, normal);
 }
 
 // Broadphase ray walk over Bullet's dynamic AABB tree, exact intersection per candidate.
@@ -462,6 +487,7 @@ RayFan::RayFan(const World& world, const Eigen::Vector3d& origin, double max_dis
     if (!wedge.may_hold(world.solids()[static_cast<size_t>(index)])) continue;
     Candidate c;
     c.entry.solid = index;
+    c.entry.view = -1;  // set once it is kept
     solid_sector(world.solids()[index], o, &c.centre, &c.lo, &c.hi, &c.entry.min_distance);
     if (c.entry.min_distance > max_distance) continue;
     list.push_back(c);
@@ -508,10 +534,14 @@ RayFan::RayFan(const World& world, const Eigen::Vector3d& origin, double max_dis
   for (int b = 0; b < bins; ++b) count[static_cast<size_t>(b) + 1] += count[static_cast<size_t>(b)];
   entries_.resize(count[static_cast<size_t>(bins)]);
   bin_start_ = count;  // count[b] is now where bin b starts; it becomes the fill cursor below
+  views_.reserve(list.size());
   for (size_t k = 0; k < list.size(); ++k) {
     const Runs& r = runs[k];
+    Entry entry = list[k].entry;
+    entry.view = static_cast<int>(views_.size());
+    views_.push_back(view_solid(world.solids()[static_cast<size_t>(entry.solid)], origin_));
     for (int i = 0; i < 2; ++i) {
-      for (int b = r.first[i]; b <= r.last[i]; ++b) entries_[count[static_cast<size_t>(b)]++] = list[k].entry;
+      for (int b = r.first[i]; b <= r.last[i]; ++b) entries_[count[static_cast<size_t>(b)]++] = entry;
     }
   }
 }
@@ -600,7 +630,7 @@ bool RayFan::cast_in_bin(int bin, const Eigen::Vector3d& dir, double max_distanc
     const Entry& e = *e_it;
     if (e.min_distance > best) break;
     double t;
-    if (hit_solid(solids[static_cast<size_t>(e.solid)], origin_, dir, best, &t, &n) && t < best) {
+    if (hit_view(views_[static_cast<size_t>(e.view)], dir, best, &t, &n) && t < best) {
       best = t;
       best_index = e.solid;
       best_normal = n;
