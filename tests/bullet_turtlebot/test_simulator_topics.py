@@ -5,7 +5,16 @@ import math
 import struct
 import time
 
-from simkit import call_service, ranges, secs, start_simulator, wall_ahead, write_pgm
+from simkit import (
+    call_service,
+    publish_once,
+    ranges,
+    secs,
+    sim_time,
+    start_simulator,
+    wall_ahead,
+    write_pgm,
+)
 
 CAMERA_X = -0.087  # camera_depth_frame in base_footprint
 
@@ -164,3 +173,26 @@ def test_cameras_depth_points_rgb(ros, tmp_path):
     assert rgb["encoding"] == "rgb8" and len(rgb["data"]) == 64 * 48 * 3
     info = by_topic["/camera/depth/camera_info"]
     assert info["width"] == 64 and info["K"][0] > 0
+
+
+def test_the_simulator_is_its_own_clock(ros, tmp_path):
+    """Its ROS time (what stamps its log messages) is its sim time, set where it publishes
+    /clock; it does not subscribe to its own /clock (under /use_sim_time roscpp would, and
+    each of the 100 messages per sim second would cross two more of its threads)."""
+    start_simulator(ros, wall_ahead(tmp_path, 3.0), speed=2.0, start_time=1000.0)
+    _, subscribers, _ = ros.system_state()
+    assert "/simulator" not in dict(subscribers).get("/clock", [])
+    probe = ros.probe(["/rosout"], duration=300, timeout=300)
+
+    def warnings():
+        return [
+            r["msg"]
+            for r in probe.messages()
+            if r["msg"]["name"] == "/simulator" and "cmd_vel_mux/input/teleop" in r["msg"]["msg"]
+        ]
+
+    publish_once(ros, "cmd_vel", linear=0.5)  # the node warns: plain cmd_vel is ignored
+    ros.wait_for(lambda: warnings(), 60, "the simulator's warning on /rosout")
+    stamp = secs(warnings()[0]["header"]["stamp"])
+    probe.stop()
+    assert 1000.0 < stamp <= sim_time(ros)  # sim time (the wall clock reads about 1.8e9 s)

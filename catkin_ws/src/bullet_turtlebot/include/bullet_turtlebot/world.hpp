@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -20,6 +21,17 @@ struct Solid {
   double cos_yaw = 1.0, sin_yaw = 0.0;                    // cached for ray tests
   Eigen::Vector3d half = Eigen::Vector3d::Constant(0.5);  // box half extents; cylinder: (r, r, h/2)
   Color color;
+};
+
+// What a solid's ray tests need from one ray origin, whatever the ray: a fan computes it once
+// per solid instead of once per ray (RayFan), with the same arithmetic, so the same
+// results as a single ray cast.
+struct SolidView {
+  const Solid* solid = nullptr;
+  bool aligned = false;  // box: axis-aligned (every wall from the grid)
+  bool inside = false;   // cylinder: the origin is inside it
+  double o[3] = {0, 0, 0};  // box: the origin in its frame; cylinder: origin - centre in x, y, origin z
+  double c = 0.0;           // cylinder: |(ox, oy)|^2 - r^2
 };
 
 struct RayHit {
@@ -75,12 +87,19 @@ class RayFan {
  private:
   struct Entry {
     int solid;
+    int view;             // index into views_
     double min_distance;  // horizontal distance from the origin to the solid's footprint
   };
+  int bins() const { return static_cast<int>(bin_start_.size()) - 1; }
+  const Entry* bin_begin(int bin) const { return entries_.data() + bin_start_[static_cast<size_t>(bin)]; }
+  const Entry* bin_end(int bin) const { return entries_.data() + bin_start_[static_cast<size_t>(bin) + 1]; }
+
   const World& world_;
   Eigen::Vector3d origin_;
   double yaw_, half_fov_, bin_width_;
-  std::vector<std::vector<Entry>> bins_;  // per azimuth bin, nearest first
+  std::vector<SolidView> views_;            // each candidate solid seen from the origin
+  std::vector<Entry> entries_;              // per azimuth bin, nearest first, bin after bin
+  std::vector<std::uint32_t> bin_start_;    // bin b is entries_[bin_start_[b], bin_start_[b + 1])
   size_t candidates_ = 0;
 };
 

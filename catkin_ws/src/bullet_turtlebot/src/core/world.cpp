@@ -13,13 +13,38 @@ namespace {
 
 btVector3 bt(const Eigen::Vector3d& v) { return btVector3(btScalar(v.x()), btScalar(v.y()), btScalar(v.z())); }
 
-bool intersect_box(const Solid& s, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
-                   double max_distance, double* distance, Eigen::Vector3d* normal) {
+inline SolidView view_solid(const Solid& s, const Eigen::Vector3d& origin) {
+  SolidView v;
+  v.solid = &s;
+  if (s.kind == Solid::kBox) {
+    const double c = s.cos_yaw, sn = s.sin_yaw;
+    const Eigen::Vector3d rel = origin - s.center;
+    // World to box frame: rotate by -yaw. Axis-aligned, the rotation would multiply by exactly
+    // 1 and 0, which changes at most the sign of a zero, and nothing below depends on it.
+    v.aligned = c == 1.0 && sn == 0.0;
+    v.o[0] = v.aligned ? rel.x() : c * rel.x() + sn * rel.y();
+    v.o[1] = v.aligned ? rel.y() : -sn * rel.x() + c * rel.y();
+    v.o[2] = rel.z();
+  } else {
+    const double r = s.half.x();
+    const double bottom = s.center.z() - s.half.z();
+    const double top = s.center.z() + s.half.z();
+    v.o[0] = origin.x() - s.center.x();
+    v.o[1] = origin.y() - s.center.y();
+    v.o[2] = origin.z();
+    v.c = v.o[0] * v.o[0] + v.o[1] * v.o[1] - r * r;
+    v.inside = v.c <= 0 && origin.z() >= bottom && origin.z() <= top;
+  }
+  return v;
+}
+
+inline bool intersect_box(const SolidView& v, const Eigen::Vector3d& dir, double max_distance, double* distance,
+                          Eigen::Vector3d* normal) {
+  const Solid& s = *v.solid;
   const double c = s.cos_yaw, sn = s.sin_yaw;
-  const Eigen::Vector3d rel = origin - s.center;
-  // World to box frame: rotate by -yaw.
-  const double o[3] = {c * rel.x() + sn * rel.y(), -sn * rel.x() + c * rel.y(), rel.z()};
-  const double d[3] = {c * dir.x() + sn * dir.y(), -sn * dir.x() + c * dir.y(), dir.z()};
+  const double* o = v.o;
+  const double d[3] = {v.aligned ? dir.x() : c * dir.x() + sn * dir.y(),
+                       v.aligned ? dir.y() : -sn * dir.x() + c * dir.y(), dir.z()};
   double t_enter = -std::numeric_limits<double>::infinity();
   double t_exit = std::numeric_limits<double>::infinity();
   int axis = -1;
@@ -49,14 +74,14 @@ bool intersect_box(const Solid& s, const Eigen::Vector3d& origin, const Eigen::V
   return true;
 }
 
-bool intersect_cylinder(const Solid& s, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
-                        double max_distance, double* distance, Eigen::Vector3d* normal) {
+inline bool intersect_cylinder(const SolidView& v, const Eigen::Vector3d& dir, double max_distance,
+                               double* distance, Eigen::Vector3d* normal) {
+  if (v.inside) return false;
+  const Solid& s = *v.solid;
   const double r = s.half.x();
   const double bottom = s.center.z() - s.half.z();
   const double top = s.center.z() + s.half.z();
-  const double ox = origin.x() - s.center.x(), oy = origin.y() - s.center.y();
-  const double c = ox * ox + oy * oy - r * r;
-  if (c <= 0 && origin.z() >= bottom && origin.z() <= top) return false;  // inside
+  const double ox = v.o[0], oy = v.o[1], oz = v.o[2], c = v.c;
   double best = std::numeric_limits<double>::infinity();
   const double a = dir.x() * dir.x() + dir.y() * dir.y();
   if (a > 1e-12) {
@@ -64,7 +89,7 @@ bool intersect_cylinder(const Solid& s, const Eigen::Vector3d& origin, const Eig
     const double disc = b * b - 4 * a * c;
     if (disc >= 0) {
       const double t = (-b - std::sqrt(disc)) / (2 * a);
-      const double z = origin.z() + t * dir.z();
+      const double z = oz + t * dir.z();
       if (t >= 0 && z >= bottom && z <= top) {
         best = t;
         *normal = Eigen::Vector3d((ox + t * dir.x()) / r, (oy + t * dir.y()) / r, 0.0);
@@ -73,7 +98,7 @@ bool intersect_cylinder(const Solid& s, const Eigen::Vector3d& origin, const Eig
   }
   for (const double cap : {top, bottom}) {
     if (std::abs(dir.z()) < 1e-12) break;
-    const double t = (cap - origin.z()) / dir.z();
+    const double t = (cap - oz) / dir.z();
     if (t < 0 || t >= best) continue;
     const double px = ox + t * dir.x(), py = oy + t * dir.y();
     if (px * px + py * py <= r * r) {
@@ -86,20 +111,32 @@ bool intersect_cylinder(const Solid& s, const Eigen::Vector3d& origin, const Eig
   return true;
 }
 
+inline bool hit_view(const SolidView& v, const Eigen::Vector3d& dir, double max_distance, double* distance,
+                     Eigen::Vector3d* normal) {
+  return v.solid->kind == Solid::kBox ? intersect_box(v, dir, max_distance, distance, normal)
+                                      : intersect_cylinder(v, dir, max_distance, distance, normal);
+}
+
+// intersect_solid, inlinable into the ray loops (the exported one is called through the PLT).
+inline bool hit_solid(const Solid& solid, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
+                      double max_distance, double* distance, Eigen::Vector3d* normal) {
+  return hit_view(view_solid(solid, origin), dir, max_distance, distance, normal);
+}
+
 // Broadphase ray walk over Bullet's dynamic AABB tree, exact intersection per candidate.
 struct RayWalker : public btBroadphaseRayCallback {
   const std::vector<Solid>* solids = nullptr;
   Eigen::Vector3d origin, dir;
   double best = 0.0;
   int best_index = -1;
-  Eigen::Vector3d best_normal;
+  Eigen::Vector3d best_normal = Eigen::Vector3d::UnitZ();  // read only after a hit
 
   bool process(const btBroadphaseProxy* proxy) override {
     const auto* object = static_cast<const btCollisionObject*>(proxy->m_clientObject);
     const int index = object->getUserIndex();
     double t;
     Eigen::Vector3d n;
-    if (intersect_solid((*solids)[index], origin, dir, best, &t, &n) && t < best) {
+    if (hit_solid((*solids)[index], origin, dir, best, &t, &n) && t < best) {
       best = t;
       best_index = index;
       best_normal = n;
@@ -157,8 +194,7 @@ bool intersect_floor(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, 
 
 bool intersect_solid(const Solid& solid, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
                      double max_distance, double* distance, Eigen::Vector3d* normal) {
-  return solid.kind == Solid::kBox ? intersect_box(solid, origin, dir, max_distance, distance, normal)
-                                   : intersect_cylinder(solid, origin, dir, max_distance, distance, normal);
+  return hit_solid(solid, origin, dir, max_distance, distance, normal);
 }
 
 std::vector<Solid> build_solids(const WorldSpec& spec) {
@@ -434,7 +470,6 @@ constexpr double kAngleSlack = 1e-6;
 RayFan::RayFan(const World& world, const Eigen::Vector3d& origin, double max_distance, double yaw, double half_fov)
     : world_(world), origin_(origin), yaw_(yaw), half_fov_(std::min(half_fov, M_PI)), bin_width_(kBinWidth) {
   const int bins = std::max(1, static_cast<int>(std::ceil(2 * half_fov_ / bin_width_)) + 1);
-  bins_.resize(static_cast<size_t>(bins));
   const FanWedge wedge(Eigen::Vector2d(origin.x(), origin.y()), max_distance, yaw_, half_fov_);
   const Eigen::Vector3d lo(wedge.lo.x(), wedge.lo.y(), -1e3);
   const Eigen::Vector3d hi(wedge.hi.x(), wedge.hi.y(), 1e3);
@@ -444,6 +479,7 @@ RayFan::RayFan(const World& world, const Eigen::Vector3d& origin, double max_dis
     double centre, lo, hi;
   };
   std::vector<Candidate> list;
+  list.reserve(found.size());
   const Eigen::Vector2d o(origin.x(), origin.y());
   for (int index : found) {
     // Most solids the bounding box holds lie outside the wedge: drop them before the
@@ -451,33 +487,62 @@ RayFan::RayFan(const World& world, const Eigen::Vector3d& origin, double max_dis
     if (!wedge.may_hold(world.solids()[static_cast<size_t>(index)])) continue;
     Candidate c;
     c.entry.solid = index;
+    c.entry.view = -1;  // set once it is kept
     solid_sector(world.solids()[index], o, &c.centre, &c.lo, &c.hi, &c.entry.min_distance);
     if (c.entry.min_distance > max_distance) continue;
     list.push_back(c);
   }
   std::sort(list.begin(), list.end(),
             [](const Candidate& a, const Candidate& b) { return a.entry.min_distance < b.entry.min_distance; });
+  // Each candidate's bins: all of them, or up to two runs (its sector may wrap around once).
+  // The bins are laid out one after another in one array (counted first, then filled in the
+  // candidates' order, so each bin stays nearest first): two allocations per fan, not one
+  // per bin.
+  struct Runs {
+    int first[2], last[2];
+  };
+  std::vector<Runs> runs(list.size());
+  std::vector<std::uint32_t> count(static_cast<size_t>(bins) + 1, 0);
   const double start = yaw_ - half_fov_;
-  for (const Candidate& c : list) {
+  for (size_t k = 0; k < list.size(); ++k) {
+    const Candidate& c = list[k];
+    Runs& r = runs[k];
     if (c.hi - c.lo >= 2 * M_PI - 1e-9) {
-      for (auto& bin : bins_) bin.push_back(c.entry);
-      ++candidates_;
-      continue;
+      r.first[0] = 0;
+      r.last[0] = bins - 1;
+      r.first[1] = 0;
+      r.last[1] = -1;
+    } else {
+      // Sector in fan coordinates [0, 2 half_fov], clipped.
+      const double a0 = normalize_angle(c.centre + c.lo - start - M_PI) + M_PI - kAngleSlack;
+      const double span = c.hi - c.lo + 2 * kAngleSlack;
+      for (int i = 0; i < 2; ++i) {
+        const double s0 = a0 + (i == 0 ? 0.0 : -2 * M_PI), s1 = s0 + span;
+        r.first[i] = std::max(0, static_cast<int>(std::floor(s0 / bin_width_)));
+        r.last[i] = std::min(bins - 1, static_cast<int>(std::floor(s1 / bin_width_)));
+      }
     }
-    // Sector in fan coordinates [0, 2 half_fov], clipped; it may wrap around once.
-    const double a0 = normalize_angle(c.centre + c.lo - start - M_PI) + M_PI - kAngleSlack;
-    const double span = c.hi - c.lo + 2 * kAngleSlack;
     bool used = false;
-    for (const double offset : {0.0, -2 * M_PI}) {
-      const double s0 = a0 + offset, s1 = s0 + span;
-      const int b0 = std::max(0, static_cast<int>(std::floor(s0 / bin_width_)));
-      const int b1 = std::min(bins - 1, static_cast<int>(std::floor(s1 / bin_width_)));
-      for (int b = b0; b <= b1; ++b) {
-        bins_[static_cast<size_t>(b)].push_back(c.entry);
+    for (int i = 0; i < 2; ++i) {
+      for (int b = r.first[i]; b <= r.last[i]; ++b) {
+        ++count[static_cast<size_t>(b) + 1];
         used = true;
       }
     }
     candidates_ += used;
+  }
+  for (int b = 0; b < bins; ++b) count[static_cast<size_t>(b) + 1] += count[static_cast<size_t>(b)];
+  entries_.resize(count[static_cast<size_t>(bins)]);
+  bin_start_ = count;  // count[b] is now where bin b starts; it becomes the fill cursor below
+  views_.reserve(list.size());
+  for (size_t k = 0; k < list.size(); ++k) {
+    const Runs& r = runs[k];
+    Entry entry = list[k].entry;
+    entry.view = static_cast<int>(views_.size());
+    views_.push_back(view_solid(world.solids()[static_cast<size_t>(entry.solid)], origin_));
+    for (int i = 0; i < 2; ++i) {
+      for (int b = r.first[i]; b <= r.last[i]; ++b) entries_[count[static_cast<size_t>(b)]++] = entry;
+    }
   }
 }
 
@@ -488,9 +553,10 @@ int RayFan::bin_of(double azimuth) const {
 
 void RayFan::column_spans(int bin, const Eigen::Vector2d& dir, double max_s, std::vector<Span>* spans) const {
   spans->clear();
-  if (bin < 0 || bin >= static_cast<int>(bins_.size())) return;
+  if (bin < 0 || bin >= bins()) return;
   const auto& solids = world_.solids();
-  for (const Entry& e : bins_[static_cast<size_t>(bin)]) {
+  for (const Entry* e_it = bin_begin(bin); e_it != bin_end(bin); ++e_it) {
+    const Entry& e = *e_it;
     if (e.min_distance > max_s) break;
     const Solid& sol = solids[static_cast<size_t>(e.solid)];
     const double ox = origin_.x() - sol.center.x(), oy = origin_.y() - sol.center.y();
@@ -552,18 +618,19 @@ bool RayFan::cast(const Eigen::Vector3d& dir, double max_distance, RayHit* hit, 
 
 bool RayFan::cast_in_bin(int bin, const Eigen::Vector3d& dir, double max_distance, RayHit* hit,
                          bool include_floor) const {
-  if (bin < 0 || bin >= static_cast<int>(bins_.size())) {
+  if (bin < 0 || bin >= bins()) {
     return world_.raycast(origin_, dir, max_distance, hit, include_floor);  // outside the fan
   }
   double best = max_distance;
   int best_index = -1;
-  Eigen::Vector3d best_normal;
+  Eigen::Vector3d best_normal = Eigen::Vector3d::UnitZ();  // read only after a hit
   const auto& solids = world_.solids();
-  for (const Entry& e : bins_[static_cast<size_t>(bin)]) {
+  Eigen::Vector3d n = Eigen::Vector3d::UnitZ();  // set by every hit
+  for (const Entry* e_it = bin_begin(bin); e_it != bin_end(bin); ++e_it) {
+    const Entry& e = *e_it;
     if (e.min_distance > best) break;
     double t;
-    Eigen::Vector3d n;
-    if (intersect_solid(solids[static_cast<size_t>(e.solid)], origin_, dir, best, &t, &n) && t < best) {
+    if (hit_view(views_[static_cast<size_t>(e.view)], dir, best, &t, &n) && t < best) {
       best = t;
       best_index = e.solid;
       best_normal = n;

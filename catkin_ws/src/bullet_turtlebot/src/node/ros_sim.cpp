@@ -77,6 +77,7 @@ RosSimulator::RosSimulator(ros::NodeHandle nh, ros::NodeHandle pnh, std::shared_
     : nh_(nh), pnh_(pnh), sim_(std::move(world), config, start), world_source_(world_source),
       mux_(turtlebot_mux_inputs()) {
   load_parameters();
+  own_clock_.set(stamp());  // the start time, before anything logs
   clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
   odom_pub_ = nh_.advertise<nav_msgs::Odometry>("odom", 20);
   truth_pub_ = nh_.advertise<nav_msgs::Odometry>("base_pose_ground_truth", 20);
@@ -246,6 +247,7 @@ void RosSimulator::on_set_pose(const geometry_msgs::Pose2D& msg) {
 void RosSimulator::publish_clock() {
   rosgraph_msgs::Clock clock;
   clock.clock = stamp();
+  own_clock_.set(clock.clock);
   clock_pub_.publish(clock);
 }
 

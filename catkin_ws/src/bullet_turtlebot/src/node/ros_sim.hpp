@@ -12,6 +12,7 @@
 
 #include "bullet_turtlebot/command_mux.hpp"
 #include "bullet_turtlebot/simulation.hpp"
+#include "own_clock.hpp"
 
 namespace bullet_turtlebot {
 
@@ -49,6 +50,7 @@ class RosSimulator {
   static constexpr double kDriverQuietWallSeconds = 1.0;
 
   ros::NodeHandle nh_, pnh_;
+  OwnClock own_clock_;  // after the node handles: it asks the master
   Simulation sim_;
   std::string world_source_;
   // ~use_sim_time_before_launch, set by simulator.launch: "unset", "true", "false" or

@@ -6,10 +6,13 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "bullet_turtlebot/shipped_worlds.hpp"
 #include "bullet_turtlebot/world_spec.hpp"
 #include "checked_params.hpp"
+#include "own_clock.hpp"
 #include "ros_sim.hpp"
 
 namespace {
@@ -50,7 +53,11 @@ void read_base_parameters(const ros::NodeHandle& pnh, bullet_turtlebot::Simulati
 int main(int argc, char** argv) {
   // Our own SIGINT handler: roscpp's would shut the node down at once, and the simulator
   // still has to talk to the master on its way out (RosSimulator::restore_use_sim_time).
-  ros::init(argc, argv, "simulator", ros::init_options::NoSigintHandler);
+  // The node keeps its own time rather than follow its own /clock (own_clock.hpp).
+  std::string own_clock_word;
+  std::vector<char*> args = bullet_turtlebot::argv_with_own_clock(argc, argv, &own_clock_word);
+  int args_count = static_cast<int>(args.size()) - 1;
+  ros::init(args_count, args.data(), "simulator", ros::init_options::NoSigintHandler);
   std::signal(SIGINT, [](int) { bullet_turtlebot::RosSimulator::request_stop(); });
   ros::NodeHandle nh;
   ros::NodeHandle pnh("~");
