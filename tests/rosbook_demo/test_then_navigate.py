@@ -68,3 +68,26 @@ def test_then_navigate_visits_goals_on_the_saved_map(navigated):
         assert 1.0 <= goal["time_ratio"] < 10.0, goal
     assert nav["localization_rms_m"] <= LOCALIZATION_RMS_LIMIT, nav
     assert nav["localization_max_m"] < 1.0, nav
+
+
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["--goals", "0"], "--goals must be 1 to 100"),
+        (["--goals-file", "/nonexistent/goals.yaml"], "--goals-file: /nonexistent/goals.yaml"),
+    ],
+)
+def test_then_navigate_rejects_bad_goals_before_simulating(tmp_path, args, message):
+    env = ros_environment(0)
+    env.pop("ROS_MASTER_URI")
+    done = subprocess.run(
+        [str(REPO / "scripts" / "demo.sh"), "--then-navigate", *args, "--out", str(tmp_path)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        env=env,
+        stdin=subprocess.DEVNULL,
+    )
+    assert done.returncode == 2, done.stderr
+    assert message in done.stderr, done.stderr
+    assert not any(tmp_path.iterdir())  # nothing simulated or written
