@@ -45,6 +45,11 @@ LAUNCHES = {
         False,
         False,
     ),
+    "catkin_ws/src/rosbook_demo/launch/navigate_live.launch": (
+        ["world:=office", "map_file:={repo}/maps/office.yaml", "speed:=2", "bag:={tmp}/nav.bag"],
+        False,
+        False,
+    ),
     "catkin_ws/src/rosbook_demo/launch/navigation.launch": (
         ["map_file:={repo}/maps/office.yaml"],
         False,

@@ -25,11 +25,22 @@ MAP_IN_WORLD = (-8.5, 0.0, 0.0)
 # to keep the test quick.
 GOAL = (3.0, 0.0, 0.0)
 SPEED = 4  # the simulator waits for move_base if it lags (wait_for_commands)
-# On the world's own map chapter 10 holds the robot to 0.2 m and 0.2 rad of the goal
-# (test_navigation.py: move_base_lite's 0.05 m tolerance plus amcl's error along a flat
-# wall). On a SLAM map amcl localizes against the map's walls, so the robot ends where the
-# goal is on the map, off the world's goal by as much as the map's walls are off the
-# world's there: that error is measured from the two maps (map_error_near).
+# move_base_lite stops when its own pose (amcl's map -> odom with odometry) is within
+# xy_goal_tolerance of the goal (config/move_base_params.yaml), and the Kobuki then coasts
+# at most a centimetre (the last command is under 0.1 m/s). That is what the controller
+# guarantees, and it is checked exactly.
+XY_GOAL_TOLERANCE = 0.05
+COAST = 0.01
+# Where the robot truly ends adds amcl's error. Along this corridor it is the larger part:
+# the robot stopped 0.07-0.22 m short of the goal in the world, always along the corridor,
+# and as far short on the world's own map (maps/office.yaml) as on this one, while
+# move_base's own pose was within 0.05 m of the goal: the corridor's walls run along the
+# Kinect's 58 degree view and its far end is beyond the 8 m range, so amcl's estimate
+# drifts along it (0.08 m ahead of the robot after the first update standing still, 0.1-0.2
+# m ahead after 3 m). Not the goal tolerance, the slow-down for the goal, the goal's
+# inflation or the map's offset (its walls near the route are within 0.02 m of the
+# world's, placed at the start pose). Chapter 10's 0.2 m / 0.2 rad (test_navigation.py)
+# plus how far the map's walls are off the world's there (map_error_near) bounds it.
 GOAL_POSITION_LIMIT = 0.2
 GOAL_YAW_LIMIT = 0.2
 
@@ -71,6 +82,11 @@ def to_world(x, y):
 
 def yaw_of(q):
     return math.atan2(2 * (q["w"] * q["z"] + q["x"] * q["y"]), 1 - 2 * (q["y"] ** 2 + q["z"] ** 2))
+
+
+def compose(a, b):
+    c, s = math.cos(a[2]), math.sin(a[2])
+    return (a[0] + c * b[0] - s * b[1], a[1] + s * b[0] + c * b[1], a[2] + b[2])
 
 
 def angle_between(a, b):
@@ -121,6 +137,24 @@ def test_goal_on_a_slam_map_is_reached_in_the_world(ros):
     plan = ros.echo("/move_base/plan", count=1, timeout=60)[0]["msg"]
     cloud = ros.echo("/particlecloud", count=1, timeout=60)[0]["msg"]
     amcl = ros.echo("/amcl_pose", count=1, timeout=60)[0]["msg"]["pose"]["pose"]["position"]
+    # move_base's own pose now: amcl's newest map -> odom correction with odometry.
+    odom = ros.echo("/odom", count=1, timeout=60)[0]["msg"]["pose"]["pose"]
+    corrections = [
+        tf["transform"]
+        for message in ros.echo("/tf", count=30, timeout=60)
+        for tf in message["msg"]["transforms"]
+        if tf["header"]["frame_id"].lstrip("/") == "map"
+        and tf["child_frame_id"].lstrip("/") == "odom"
+    ]
+    assert corrections, "no map -> odom transform from amcl on /tf"
+    own = compose(
+        (
+            corrections[-1]["translation"]["x"],
+            corrections[-1]["translation"]["y"],
+            yaw_of(corrections[-1]["rotation"]),
+        ),
+        (odom["position"]["x"], odom["position"]["y"], yaw_of(odom["orientation"])),
+    )
 
     goal_x, goal_y = to_world(GOAL[0], GOAL[1])
     goal_yaw = GOAL[2] + MAP_IN_WORLD[2]
@@ -140,7 +174,10 @@ def test_goal_on_a_slam_map_is_reached_in_the_world(ros):
         f"update in the world ({amcl_x:.3f}, {amcl_y:.3f}); the map's walls near the route "
         f"are off the world's by {map_error:.2f} m (90th percentile)"
     )
+    own_error = math.hypot(own[0] - GOAL[0], own[1] - GOAL[1])
+    print(f"move_base's own pose at the end ({own[0]:.3f}, {own[1]:.3f}): {own_error:.3f} m off")
     assert status["status"] == 3, status  # SUCCEEDED
+    assert own_error <= XY_GOAL_TOLERANCE + COAST, own
     assert position_error <= GOAL_POSITION_LIMIT + map_error, (position_error, map_error)
     assert yaw_error <= GOAL_YAW_LIMIT, yaw_error
     # What rviz's Path and PoseArray displays show, in the fixed frame map.

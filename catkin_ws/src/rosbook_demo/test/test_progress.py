@@ -65,3 +65,12 @@ def test_died_nodes_names_the_required_nodes_roslaunch_saw_die():
     )
     assert died_nodes(log) == ["slam_gmapping", "record"]
     assert died_nodes("all is well\n") == []
+
+
+def test_died_nodes_can_name_any_node_that_died():
+    log = (
+        "process[map_server-4]: started with pid [27893]\n"
+        "\x1b[31m[map_server-4] process has died [pid 27893, exit code 1, cmd ...].\n"
+    )
+    assert died_nodes(log) == []
+    assert died_nodes(log, required_only=False) == ["map_server"]

@@ -94,12 +94,17 @@ def slam_skip_warning(counts):
 # roslaunch's line when a node marked required="true" ends: "REQUIRED process [slam_gmapping-3]
 # has died!" (the number is roslaunch's own count of the processes it started).
 _REQUIRED_DIED = re.compile(r"REQUIRED process \[(.+?)(?:-\d+)?\] has died")
+_ANY_DIED = re.compile(r"\[([^\[\]\s]+?)(?:-\d+)?\] process has died")
 
 
-def died_nodes(launch_log):
-    """The required nodes roslaunch reports dead in its output, in order, without repeats."""
+def died_nodes(launch_log, required_only=True):
+    """The required nodes (or, with required_only=False, any nodes) roslaunch reports dead
+    in its output, in order, without repeats."""
     names = []
-    for name in _REQUIRED_DIED.findall(launch_log):
+    found = _REQUIRED_DIED.findall(launch_log)
+    if not required_only:
+        found += _ANY_DIED.findall(launch_log)
+    for name in found:
         if name not in names:
             names.append(name)
     return names

@@ -1,0 +1,48 @@
+"""world_start: the start pose the simulator uses, resolved from a name or a path as the
+simulator resolves it; a missing `start` is the origin; bad files get a clear error."""
+
+import re
+import subprocess
+from pathlib import Path
+
+import pytest
+from bullet_turtlebot.world_start import start_pose, world_path
+
+PACKAGE = Path(__file__).resolve().parent.parent
+WORLDS = PACKAGE / "worlds"
+
+
+def test_a_shipped_world_by_name_and_by_path():
+    assert start_pose("office", WORLDS) == (-8.5, 0.0, 0.0)
+    assert start_pose(str(WORLDS / "maze.yaml"), "/nowhere") == (0.75, 0.75, 0.0)
+    assert world_path("lab.yaml", WORLDS) == Path("lab.yaml")  # as the simulator: a path
+
+
+def test_a_world_without_start_starts_at_the_origin(tmp_path):
+    world = tmp_path / "w.yaml"
+    world.write_text("image: w.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n")
+    assert start_pose(str(world), WORLDS) == (0.0, 0.0, 0.0)
+
+
+@pytest.mark.parametrize(
+    "text, message",
+    [("start: [1, 2]\n", "'start' must be [x, y, yaw]"), ("start: [a\n", "not YAML")],
+)
+def test_bad_world_files_are_named(tmp_path, text, message):
+    world = tmp_path / "bad.yaml"
+    world.write_text(text)
+    with pytest.raises(ValueError, match=re.escape(message)):
+        start_pose(str(world), WORLDS)
+    with pytest.raises(ValueError, match="cannot read world file"):
+        start_pose("no_such_world", WORLDS)
+
+
+def test_the_script_prints_one_component():
+    script = PACKAGE / "scripts" / "world_start.py"
+    env = {"PYTHONPATH": str(PACKAGE / "src"), "PATH": "/usr/bin:/bin"}
+    done = subprocess.run(
+        [str(script), "office", "x", str(WORLDS)], capture_output=True, text=True, env=env
+    )
+    assert (done.returncode, done.stdout.strip()) == (0, "-8.5")
+    done = subprocess.run([str(script), "nope", "yaw"], capture_output=True, text=True, env=env)
+    assert done.returncode == 1 and "world_start.py: cannot read world file" in done.stderr
