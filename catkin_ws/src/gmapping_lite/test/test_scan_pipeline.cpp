@@ -18,7 +18,7 @@
 #include "gmapping_lite/particle_filter.h"
 #include "gmapping_lite/scan_input.h"
 #include "gmapping_lite/scan_pipeline.h"
-#include "gmapping_lite/synthetic.h"
+#include "synthetic.h"
 
 using namespace gmapping_lite;  // NOLINT: test file
 
