@@ -1,9 +1,10 @@
 """Helpers for the simulator's integration tests: worlds written on the fly, a simulator
 started in sim time, and reading probe records."""
 
-import math
 import subprocess
 from pathlib import Path
+
+from rosbook_env.geometry import yaw_of
 
 HERE = Path(__file__).resolve().parent
 DRIVE = HERE / "drive_node.py"
@@ -69,9 +70,7 @@ def publish_once(ros, topic, linear=0.0, angular=0.0, count=3):
 def last_pose(ros, topic="base_pose_ground_truth"):
     msg = ros.echo(topic, count=1)[0]["msg"]
     p = msg["pose"]["pose"]
-    q = p["orientation"]
-    yaw = 2 * math.atan2(q["z"], q["w"])
-    return p["position"]["x"], p["position"]["y"], yaw, msg
+    return p["position"]["x"], p["position"]["y"], yaw_of(p["orientation"]), msg
 
 
 def secs(value):

@@ -5,7 +5,6 @@ and a `map` (latched OccupancyGrid, frame map) built from `scan` at the tf pose.
     stand_in_mapper.py [_size:=40] [_resolution:=0.05] [_map_period:=2.0]
 """
 
-import math
 import sys
 import threading
 from pathlib import Path
@@ -15,6 +14,7 @@ import rospy
 import tf2_ros
 from geometry_msgs.msg import TransformStamped
 from nav_msgs.msg import OccupancyGrid
+from rosbook_env.geometry import yaw_of
 from sensor_msgs.msg import LaserScan
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -52,8 +52,7 @@ def main():
         except tf2_ros.TransformException:
             return
         last[0] = stamp
-        q = t.transform.rotation
-        yaw = math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
+        yaw = yaw_of(t.transform.rotation)
         angles = msg.angle_min + msg.angle_increment * np.arange(len(msg.ranges))
         ranges = np.array(msg.ranges, dtype=float)
         ranges[(ranges > msg.range_max) & np.isfinite(ranges)] = np.inf

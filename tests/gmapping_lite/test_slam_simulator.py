@@ -6,15 +6,11 @@ import math
 import sys
 from pathlib import Path
 
-from map_server.map_io import quaternion_to_yaw
+from rosbook_env.geometry import yaw_of
 from rosbook_eval.poses import compose, inverse
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from slam_node_kit import load_turtlebot_tuning  # noqa: E402
-
-
-def yaw(q):
-    return quaternion_to_yaw(q["x"], q["y"], q["z"], q["w"])
 
 
 def latest(transforms, parent, child):
@@ -26,7 +22,7 @@ def latest(transforms, parent, child):
     ]
     assert found, f"no {parent} -> {child} transform"
     t = found[-1]["transform"]
-    return (t["translation"]["x"], t["translation"]["y"], yaw(t["rotation"]))
+    return (t["translation"]["x"], t["translation"]["y"], yaw_of(t["rotation"]))
 
 
 def test_live_mapping_in_the_office_tracks_the_true_pose(ros):
@@ -55,8 +51,8 @@ def test_live_mapping_in_the_office_tracks_the_true_pose(ros):
     odom_to_base = latest(transforms, "odom", "base_footprint")
     slam_pose = compose(map_to_odom, odom_to_base)
     # The map frame starts at the robot's start pose (odometry's origin): compare there.
-    s0 = (start["position"]["x"], start["position"]["y"], yaw(start["orientation"]))
-    true_pose = (truth["position"]["x"], truth["position"]["y"], yaw(truth["orientation"]))
+    s0 = (start["position"]["x"], start["position"]["y"], yaw_of(start["orientation"]))
+    true_pose = (truth["position"]["x"], truth["position"]["y"], yaw_of(truth["orientation"]))
     true_rel = compose(inverse(s0), true_pose)
     error = math.hypot(slam_pose[0] - true_rel[0], slam_pose[1] - true_rel[1])
     assert error < 0.15, (slam_pose, true_rel)

@@ -16,6 +16,7 @@ import threading
 import rospy
 from geometry_msgs.msg import PoseWithCovarianceStamped, Twist
 from nav_msgs.msg import Odometry
+from rosbook_env.geometry import yaw_of
 from sensor_msgs.msg import LaserScan
 from std_srvs.srv import Empty
 from tf2_msgs.msg import TFMessage
@@ -28,10 +29,6 @@ WANDER_SPEED = 0.3  # m/s
 TURN_RATE = 0.8  # rad/s: amcl updates every update_min_a (0.2 rad), four times a sim second
 # s: the base stops from those speeds within 0.15 s (the Kobuki's 2 m/s^2 and 6 rad/s^2).
 STOPPING = 0.3
-
-
-def yaw_of(q):
-    return math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
 
 
 def angle_diff(a, b):

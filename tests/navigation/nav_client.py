@@ -18,13 +18,10 @@ from actionlib_msgs.msg import GoalStatus
 from geometry_msgs.msg import PoseWithCovarianceStamped, Twist
 from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
 from nav_msgs.msg import Odometry
+from rosbook_env.geometry import yaw_of
 from std_srvs.srv import Empty
 
 STATES = {v: k for k, v in vars(GoalStatus).items() if k.isupper() and isinstance(v, int)}
-
-
-def yaw_of(q):
-    return math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
 
 
 class Recorder:

@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 import yaml
 from PIL import Image
+from rosbook_env.geometry import yaw_of
 from scipy import ndimage
 
 REPO = Path(__file__).resolve().parents[2]
@@ -78,10 +79,6 @@ def to_world(x, y):
         ox + np.cos(oa) * x - np.sin(oa) * y,
         oy + np.sin(oa) * x + np.cos(oa) * y,
     )
-
-
-def yaw_of(q):
-    return math.atan2(2 * (q["w"] * q["z"] + q["x"] * q["y"]), 1 - 2 * (q["y"] ** 2 + q["z"] ** 2))
 
 
 def compose(a, b):

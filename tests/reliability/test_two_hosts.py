@@ -15,7 +15,7 @@ import subprocess
 import sys
 
 import pytest
-from map_server.map_io import quaternion_to_yaw
+from rosbook_env.geometry import yaw_of
 from rosbook_eval.grids import near_wall_share, occupied_points
 from rosbook_eval.poses import compose, inverse
 from rosbook_eval.scoring import DEFAULT_TOLERANCE, place_grid
@@ -157,13 +157,9 @@ def wait_for(predicate, what, timeout=90):
 output = RosGraph.output  # a started process's log
 
 
-def yaw(q):
-    return quaternion_to_yaw(q["x"], q["y"], q["z"], q["w"])
-
-
 def pose_of(message):
     p = message["pose"]["pose"]
-    return (p["position"]["x"], p["position"]["y"], yaw(p["orientation"]))
+    return (p["position"]["x"], p["position"]["y"], yaw_of(p["orientation"]))
 
 
 def scan_subscribers(host_a, host_b):

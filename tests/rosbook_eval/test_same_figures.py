@@ -43,8 +43,8 @@ def write_bag(path, truth_grid):
     import rosbag
     import rospy
     from geometry_msgs.msg import TransformStamped
-    from map_server.map_io import yaw_to_quaternion
     from nav_msgs.msg import OccupancyGrid, Odometry
+    from rosbook_env.geometry import yaw_to_quaternion
     from rosbook_eval.poses import compose, inverse
     from tf2_msgs.msg import TFMessage
 

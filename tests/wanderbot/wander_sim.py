@@ -7,6 +7,7 @@ import subprocess
 import time
 
 import pytest
+from rosbook_env.geometry import yaw_of
 
 # Sim speed for the tests (1.0 = real time). Faster than real time, yet slow enough that
 # 10 Hz Python nodes keep up on a loaded 2-core machine (the base stops 0.6 s sim time
@@ -53,11 +54,7 @@ def poses(messages, topic="base_pose_ground_truth"):
         if m["topic"] != topic:
             continue
         p = m["msg"]["pose"]["pose"]
-        q = p["orientation"]
-        yaw = math.atan2(
-            2 * (q["w"] * q["z"] + q["x"] * q["y"]), 1 - 2 * (q["y"] ** 2 + q["z"] ** 2)
-        )
-        out.append((m["ros"], p["position"]["x"], p["position"]["y"], yaw))
+        out.append((m["ros"], p["position"]["x"], p["position"]["y"], yaw_of(p["orientation"])))
     return out
 
 

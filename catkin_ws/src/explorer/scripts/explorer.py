@@ -28,6 +28,7 @@ from explorer.recovery import RecoveryParams  # noqa: E402
 from explorer.scan_safety import clearance_ahead  # noqa: E402
 from geometry_msgs.msg import PoseStamped, Twist  # noqa: E402
 from nav_msgs.msg import Path  # noqa: E402
+from rosbook_env.geometry import yaw_of, yaw_to_quaternion  # noqa: E402
 from rosbook_env.master_watch import survive_master_restart  # noqa: E402
 from rosbook_env.params import ParamError, non_negative, positive  # noqa: E402
 from sensor_msgs.msg import LaserScan  # noqa: E402
@@ -175,8 +176,7 @@ class ExplorerNode:
             )
             return None
         q = t.transform.rotation
-        yaw = math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
-        return t.transform.translation.x, t.transform.translation.y, yaw
+        return t.transform.translation.x, t.transform.translation.y, yaw_of(q)
 
     # -- control loop (sim time) --------------------------------------------------
     def control(self, _event):
@@ -279,8 +279,8 @@ class ExplorerNode:
         goal.header = path.header
         goal.pose.position.x, goal.pose.position.y = plan.goal
         look = plan.look_yaws[len(plan.look_yaws) // 2] if plan.look_yaws else 0.0
-        goal.pose.orientation.z = math.sin(look / 2)
-        goal.pose.orientation.w = math.cos(look / 2)
+        o = goal.pose.orientation
+        o.x, o.y, o.z, o.w = yaw_to_quaternion(look)
         self.goal_pub.publish(goal)
 
     def run(self):

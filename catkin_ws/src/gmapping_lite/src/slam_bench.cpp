@@ -13,7 +13,7 @@
 #include <ros/package.h>
 
 #include "gmapping_lite/particle_filter.h"
-#include "gmapping_lite/synthetic.h"
+#include "synthetic.h"
 #include "gmapping_lite/tuning_file.h"
 
 using namespace gmapping_lite;  // NOLINT: a program, not a header

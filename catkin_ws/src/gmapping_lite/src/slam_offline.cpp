@@ -20,14 +20,12 @@
 
 #include <sensor_msgs/LaserScan.h>
 #include <tf2/buffer_core.h>
-#include <tf2/utils.h>
-#include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 #include <tf2_msgs/TFMessage.h>
 
 #include "gmapping_lite/occupancy.h"
 #include "gmapping_lite/param_table.h"
 #include "gmapping_lite/particle_filter.h"
-#include "gmapping_lite/scan_input.h"
+#include "gmapping_lite/scan_pipeline.h"
 
 using namespace gmapping_lite;  // NOLINT: a program, not a header
 
@@ -48,8 +46,6 @@ int usage(const char* why) {
                why);
   return 2;
 }
-
-std::string stripSlash(const std::string& f) { return !f.empty() && f[0] == '/' ? f.substr(1) : f; }
 
 bool parse(int argc, char** argv, Options* o, std::string* error) {
   for (int i = 1; i < argc; ++i) {
@@ -106,8 +102,6 @@ int main(int argc, char** argv) {
   Options o;
   std::string error;
   if (!parse(argc, argv, &o, &error)) return usage(error.c_str());
-  o.base_frame = stripSlash(o.base_frame);
-  o.odom_frame = stripSlash(o.odom_frame);
   ros::Time::init();
   const auto wall_start = std::chrono::steady_clock::now();
 
@@ -150,87 +144,64 @@ int main(int argc, char** argv) {
                  o.scan_topic.c_str());
     return 1;
   }
-  std::unique_ptr<ParticleFilter> filter;
-  std::map<std::string, std::pair<std::size_t, LaserGeometry>> lasers;
-  int scans = 0, dropped = 0, loop_attempts = 0, loops = 0, rebuilds = 0;
-  ScanDrops malformed(5.0);  // warn at most every 5 s of scan time, each line with the count
+  ScanPipelineOptions options;
+  options.base_frame = o.base_frame;
+  options.odom_frame = o.odom_frame;
+  options.tilt_tolerance = o.tilt_tolerance;
+  options.params = o.params;
+  options.max_range_set = o.max_range_set;
+  options.max_urange_set = o.max_urange_set;
+  ScanPipeline pipeline(options, lookupIn(tf));
+  int loop_attempts = 0, loops = 0, rebuilds = 0;
+  int unstamped_said = 0, no_odometry_said = 0;  // the first few of each are said
   double first_stamp = -1, last_stamp = 0;
   for (const rosbag::MessageInstance& m : scan_view) {
     const auto scan = m.instantiate<sensor_msgs::LaserScan>();
     if (!scan) continue;
-    ++scans;
-    if (const auto problem =
-            scanProblem(scan->angle_min, scan->angle_max, scan->angle_increment,
-                        scan->ranges.size(), scan->range_min, scan->range_max)) {
-      if (malformed.count(scan->header.stamp.toSec()))
-        std::fprintf(stderr,
-                     "slam_offline: dropping a malformed scan on frame '%s' at %.3f: %s; "
-                     "malformed scans dropped so far: %d\n",
-                     scan->header.frame_id.c_str(), scan->header.stamp.toSec(), problem->c_str(),
-                     malformed.total());
-      continue;
-    }
-    const std::string frame = stripSlash(scan->header.frame_id);
-    auto it = lasers.find(frame);
-    if (it == lasers.end() || it->second.first != scan->ranges.size()) {
-      if (it != lasers.end())
-        std::fprintf(stderr, "slam_offline: scan on %s changed from %zu to %zu beams\n",
-                     frame.c_str(), it->second.first, scan->ranges.size());
-      geometry_msgs::TransformStamped mount;
-      try {
-        mount = tf.lookupTransform(o.base_frame, frame, ros::Time(0));
-      } catch (const tf2::TransformException& e) {
-        std::fprintf(stderr, "slam_offline: no transform from '%s' to laser frame '%s': %s\n",
-                     o.base_frame.c_str(), frame.c_str(), e.what());
+    const ScanOutcome r = pipeline.process(*scan);
+    for (const ScanNote& note : r.notes)
+      if (note.warning) std::fprintf(stderr, "slam_offline: %s\n", note.text.c_str());
+    switch (r.result) {
+      case ScanResult::kNoMount:
+      case ScanResult::kBadMount:
+        // A bag's tf is all there: a laser it cannot place now it never will.
+        std::fprintf(stderr, "slam_offline: %s\n", r.problem.c_str());
         return 1;
-      }
-      tf2::Transform laser_in_base;
-      tf2::fromMsg(mount.transform, laser_in_base);
-      LaserGeometry g;
-      if (!makeLaserGeometry(laser_in_base, scan->angle_min, scan->angle_increment,
-                             scan->ranges.size(), o.tilt_tolerance, &g, &error)) {
-        std::fprintf(stderr, "slam_offline: laser frame '%s': %s\n", frame.c_str(), error.c_str());
-        return 1;
-      }
-      it = lasers.insert_or_assign(frame, std::make_pair(scan->ranges.size(), g)).first;
+      case ScanResult::kMalformed:
+        if (r.report) std::fprintf(stderr, "slam_offline: %s\n", r.problem.c_str());
+        continue;
+      case ScanResult::kUnstamped:
+        if (++unstamped_said <= 3) std::fprintf(stderr, "slam_offline: %s\n", r.problem.c_str());
+        continue;
+      case ScanResult::kNoOdometry:
+        if (++no_odometry_said <= 3)
+          std::fprintf(stderr, "slam_offline: %s\n", r.problem.c_str());
+        continue;
+      case ScanResult::kUpdated:
+      case ScanResult::kNotUpdated:
+        break;
     }
-    geometry_msgs::TransformStamped odom_tf;
-    try {
-      odom_tf = tf.lookupTransform(o.odom_frame, o.base_frame, scan->header.stamp);
-    } catch (const tf2::TransformException& e) {
-      if (++dropped <= 3)
-        std::fprintf(stderr, "slam_offline: scan at %.3f dropped: no '%s' -> '%s': %s\n",
-                     scan->header.stamp.toSec(), o.odom_frame.c_str(), o.base_frame.c_str(),
-                     e.what());
-      continue;
-    }
-    if (!filter) {
-      const std::string note =
-          rangeDefaults(&o.params, scan->range_max, o.max_range_set, o.max_urange_set);
-      if (!note.empty()) std::fprintf(stderr, "slam_offline: %s\n", note.c_str());
-      filter = std::make_unique<ParticleFilter>(o.params);
-    }
-    const Pose2 odom(odom_tf.transform.translation.x, odom_tf.transform.translation.y,
-                     tf2::getYaw(odom_tf.transform.rotation));
     const double stamp = scan->header.stamp.toSec();
     if (first_stamp < 0) first_stamp = stamp;
     last_stamp = stamp;
-    const UpdateReport r = filter->addScan(odom, stamp, it->second.second,
-                                           toRanges(scan->ranges, scan->range_min, scan->range_max));
-    loop_attempts += r.loop.tried;
-    loops += r.loop.accepted;
-    rebuilds += r.map_rebuilt;
+    loop_attempts += r.update.loop.tried;
+    loops += r.update.loop.accepted;
+    rebuilds += r.update.map_rebuilt;
   }
+  const ParticleFilter* filter = pipeline.filter();
+  const int scans = pipeline.scans(), dropped = pipeline.withoutOdometry(),
+            malformed = pipeline.malformed() + pipeline.unstamped();
   if (!filter) {
     std::fprintf(stderr,
                  "slam_offline: no scan could be placed (%d scans, %d without odometry, %d "
                  "malformed)\n",
-                 scans, dropped, malformed.total());
+                 scans, dropped, malformed);
     return 1;
   }
   const Particle& best = filter->best();
-  const OccupancyMap occ = toOccupancy(best.map, o.params.xmin, o.params.ymin, o.params.xmax,
-                                       o.params.ymax, o.params.occ_thresh);
+  const SlamParams& params = pipeline.params();
+  const OccupancyMap occ = toOccupancy(best.map, params.xmin, params.ymin, params.xmax,
+                                       params.ymax, params.occ_thresh);
   if (!writeMapFiles(occ, o.out, &error)) {
     std::fprintf(stderr, "slam_offline: %s\n", error.c_str());
     return 1;
@@ -262,7 +233,7 @@ int main(int argc, char** argv) {
               "%zu tf messages; "
               "%.1f s of data in %.2f s (%.1fx real time, cpu %.2f s); map %dx%d written to "
               "%s.pgm/.yaml; loop closures %d of %d tried (%d redrew the map)\n",
-              scans, dropped, malformed.total(), filter->updates(), tf_count, duration, wall,
+              scans, dropped, malformed, filter->updates(), tf_count, duration, wall,
               wall > 0 ? duration / wall : 0.0, cpu, occ.width, occ.height, o.out.c_str(), loops,
               loop_attempts, rebuilds);
   return 0;

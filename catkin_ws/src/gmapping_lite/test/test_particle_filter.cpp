@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "gmapping_lite/particle_filter.h"
-#include "gmapping_lite/synthetic.h"
+#include "synthetic.h"
 #include "gmapping_lite/tuning_file.h"
 
 using namespace gmapping_lite;  // NOLINT: test file

@@ -4,7 +4,7 @@
 #include <limits>
 
 #include "gmapping_lite/scan_matcher.h"
-#include "gmapping_lite/synthetic.h"
+#include "synthetic.h"
 
 using namespace gmapping_lite;  // NOLINT: test file
 

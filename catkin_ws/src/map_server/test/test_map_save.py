@@ -145,11 +145,6 @@ def test_base_name_accepts_file_suffixes():
     assert map_io.map_base_name("office.yaml") == "office"
 
 
-def test_yaw_quaternion_round_trip():
-    for yaw in (0.0, 0.5, -1.2, 3.0):
-        assert map_io.quaternion_to_yaw(*map_io.yaw_to_quaternion(yaw)) == pytest.approx(yaw)
-
-
 def test_unwritable_folder_names_the_map_file(tmp_path, monkeypatch):
     import tempfile
 

@@ -30,18 +30,14 @@ from move_base_msgs.msg import MoveBaseAction, MoveBaseActionGoal, MoveBaseResul
 from nav_msgs.msg import OccupancyGrid  # noqa: E402
 from nav_msgs.msg import Path as PathMsg
 from nav_msgs.srv import GetPlan, GetPlanResponse  # noqa: E402
+from rosbook_env.geometry import yaw_of, yaw_to_quaternion  # noqa: E402
 from rosbook_env.master_watch import survive_master_restart  # noqa: E402
 from rosbook_env.params import ParamError, count, positive  # noqa: E402
 from sensor_msgs.msg import LaserScan  # noqa: E402
 
 
-def yaw_of(q):
-    return math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
-
-
 def set_yaw(q, yaw):
-    q.x = q.y = 0.0
-    q.z, q.w = math.sin(yaw / 2), math.cos(yaw / 2)
+    q.x, q.y, q.z, q.w = yaw_to_quaternion(yaw)
 
 
 class MoveBase:

@@ -12,22 +12,11 @@ from rosbook_eval.poses import (
     rms,
     start_frame,
     wrap,
-    yaw_of,
 )
 
 
 def close(a, b, tol=1e-9):
     return all(abs(x - y) < tol for x, y in zip(a, b, strict=True))
-
-
-class Quaternion:
-    def __init__(self, yaw):
-        self.x, self.y, self.z, self.w = 0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2)
-
-
-def test_yaw_of_a_quaternion():
-    assert yaw_of(Quaternion(2.5)) == pytest.approx(2.5)
-    assert yaw_of(Quaternion(-3.0)) == pytest.approx(-3.0)
 
 
 def test_compose_then_inverse_is_identity():

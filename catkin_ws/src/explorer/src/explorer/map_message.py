@@ -7,6 +7,7 @@ import struct
 from dataclasses import dataclass
 
 import numpy as np
+from rosbook_env.geometry import quaternion_to_yaw
 
 
 class MapFormatError(ValueError):
@@ -22,12 +23,6 @@ class RawMap:
     height: int
     origin: tuple  # (x, y, yaw)
     data: np.ndarray  # int8, shape (height, width)
-
-
-def _yaw(qx, qy, qz, qw):
-    import math
-
-    return math.atan2(2.0 * (qw * qz + qx * qy), 1.0 - 2.0 * (qy * qy + qz * qz))
 
 
 def decode_occupancy_grid(buffer):
@@ -61,6 +56,6 @@ def decode_occupancy_grid(buffer):
         float(resolution),
         int(width),
         int(height),
-        (px, py, _yaw(qx, qy, qz, qw)),
+        (px, py, quaternion_to_yaw(qx, qy, qz, qw)),
         data,
     )

@@ -10,7 +10,7 @@
 namespace gmapping_lite {
 
 // slam_gmapping's private parameters that are not the filter's (paramTable): frames,
-// publishing and waits. slam_gmapping_node.cpp reads each of them.
+// publishing and waits. SlamGmappingNode (src/slam_gmapping_node.cpp) reads each of them.
 const std::vector<std::string>& nodeParamNames();
 
 // Those of `names` (private parameter names, without "~") that slam_gmapping reads neither

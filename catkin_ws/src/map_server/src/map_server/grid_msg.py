@@ -3,8 +3,9 @@
 import numpy as np
 from geometry_msgs.msg import Pose
 from nav_msgs.msg import MapMetaData, OccupancyGrid
+from rosbook_env.geometry import quaternion_to_yaw, yaw_to_quaternion
 
-from map_server.map_io import OccupancyMap, quaternion_to_yaw, yaw_to_quaternion
+from map_server.map_io import OccupancyMap
 
 
 def map_metadata(omap, load_time):

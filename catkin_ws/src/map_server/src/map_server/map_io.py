@@ -73,11 +73,9 @@ __all__ = [
     "map_yaml_text",
     "occupancy_to_pgm",
     "parse_map_yaml",
-    "quaternion_to_yaw",
     "read_grey_image",
     "read_map_yaml",
     "save_map",
-    "yaw_to_quaternion",
 ]
 
 
@@ -186,15 +184,3 @@ def save_map(base, omap, occupied=DEFAULT_SAVE_OCCUPIED, free=DEFAULT_SAVE_FREE)
     text = map_yaml_text(pgm_path.name, omap.resolution, omap.origin)
     write_files_atomically({pgm_path: image, yaml_path: text.encode("utf-8")})
     return pgm_path, yaml_path
-
-
-# -- geometry --------------------------------------------------------------------------
-
-
-def yaw_to_quaternion(yaw):
-    """(x, y, z, w) of a rotation by `yaw` about z."""
-    return (0.0, 0.0, math.sin(yaw / 2.0), math.cos(yaw / 2.0))
-
-
-def quaternion_to_yaw(x, y, z, w):
-    return math.atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z))

@@ -7,8 +7,9 @@ poses. SLAM's correction is the map → odom transform on /tf.
 
 import numpy as np
 import rosbag
+from rosbook_env.geometry import yaw_of
 
-from rosbook_eval.poses import Trajectory, chain, yaw_of
+from rosbook_eval.poses import Trajectory, chain
 
 TRUTH_TOPIC = "/base_pose_ground_truth"
 ODOM_TOPIC = "/odom"

@@ -12,12 +12,6 @@ inside the truth's span, so clamping never invents a truth the bag does not hold
 import math
 
 import numpy as np
-from map_server.map_io import quaternion_to_yaw
-
-
-def yaw_of(q):
-    """Yaw of a quaternion message (anything with x, y, z, w)."""
-    return quaternion_to_yaw(q.x, q.y, q.z, q.w)
 
 
 def wrap(angle):

@@ -1,4 +1,4 @@
-#include "gmapping_lite/synthetic.h"
+#include "synthetic.h"
 
 #include <algorithm>
 #include <cmath>
