@@ -16,32 +16,14 @@ REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(REPO / "tests"))
 from roskit import descendants, ros_environment  # noqa: E402
 
-SIM_SECONDS = 120
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from demo_run import run_demo  # noqa: E402
 
 
 @pytest.fixture(scope="module")
 def main_job(tmp_path_factory):
     out = tmp_path_factory.mktemp("main job") / "out dir"  # spaces in the path on purpose
-    env = ros_environment(0)  # demo.sh picks its own master port; this only checks the env
-    env.pop("ROS_MASTER_URI")
-    done = subprocess.run(
-        [
-            str(REPO / "scripts" / "demo.sh"),
-            "--sim-seconds",
-            str(SIM_SECONDS),
-            "--speed",
-            "4",
-            "--progress-every",
-            "30",
-            "--out",
-            str(out),
-        ],
-        capture_output=True,
-        text=True,
-        timeout=900,
-        env=env,
-        stdin=subprocess.DEVNULL,
-    )
+    done = run_demo(out)
     return done, out
 
 

@@ -16,7 +16,9 @@ REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(REPO / "tests"))
 from roskit import ros_environment  # noqa: E402
 
-SIM_SECONDS = 120
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from demo_run import run_demo  # noqa: E402
+
 GOALS = 3
 # Chapter 10's limits on the world's own map (tests/navigation/test_navigation.py): 0.2 m
 # and 0.2 rad at a goal. On a SLAM map the goal is where the map puts it; the map is placed
@@ -30,18 +32,7 @@ LOCALIZATION_RMS_LIMIT = 0.25  # m: amcl on the saved map, the same allowance
 @pytest.fixture(scope="module")
 def navigated(tmp_path_factory):
     out = tmp_path_factory.mktemp("then navigate") / "out"
-    env = ros_environment(0)  # demo.sh picks its own master ports
-    env.pop("ROS_MASTER_URI")
-    done = subprocess.run(
-        [str(REPO / "scripts" / "demo.sh")]
-        + ["--sim-seconds", str(SIM_SECONDS), "--speed", "4", "--progress-every", "30"]
-        + ["--then-navigate", "--goals", str(GOALS), "--out", str(out)],
-        capture_output=True,
-        text=True,
-        timeout=1500,
-        env=env,
-        stdin=subprocess.DEVNULL,
-    )
+    done = run_demo(out, ["--then-navigate", "--goals", str(GOALS)], timeout=1500)
     return done, out
 
 
