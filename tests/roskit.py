@@ -136,23 +136,7 @@ class RosGraph:
         them, killed at once. The test is over, so nothing is left to hear a clean Ctrl-C
         (each rospy node would spend most of a second on it), and the master goes too: no
         registration outlives it. Tests that check a node's Ctrl-C use `stop`."""
-        alive = [p for p in self.procs if p.poll() is None]
-        below = descendants_of([p.pid for p in alive])
-        for proc in alive:
-            try:
-                os.killpg(proc.pid, signal.SIGKILL)
-            except ProcessLookupError:
-                pass
-        for pid in below:
-            try:
-                os.kill(pid, signal.SIGKILL)
-            except ProcessLookupError:
-                pass
-        for proc in alive:
-            try:
-                proc.wait(timeout=timeout)
-            except subprocess.TimeoutExpired:
-                pass  # a zombie's parent is gone: nothing more a test can do
+        _kill_groups([p for p in self.procs if p.poll() is None], timeout)
 
     # -- waiting -----------------------------------------------------------------
     def master(self):
@@ -375,19 +359,25 @@ def descendants_of(pids):
 
 
 def _kill_group(proc):
+    _kill_groups([proc])
+
+
+def _kill_groups(procs, timeout=5):
     # roslaunch starts each node in a session of its own: killed with roslaunch's group, they
     # would live on (waiting for their master) unless killed by pid as well.
-    below = descendants(proc.pid)
-    try:
-        os.killpg(proc.pid, signal.SIGKILL)
-    except ProcessLookupError:
-        pass
+    below = descendants_of([proc.pid for proc in procs])
+    for proc in procs:
+        try:
+            os.killpg(proc.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
     for pid in below:
         try:
             os.kill(pid, signal.SIGKILL)
         except ProcessLookupError:
             pass
-    try:
-        proc.wait(timeout=5)
-    except subprocess.TimeoutExpired:
-        print(f"could not kill {proc.args!r}", file=sys.stderr)
+    for proc in procs:
+        try:
+            proc.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            print(f"could not kill {proc.args!r}", file=sys.stderr)
