@@ -39,11 +39,8 @@ TEST(WorldSpec, MapServerThresholds) {
 
 TEST(WorldSpec, LoadsImagePrimitivesAndStart) {
   const std::string dir = temp_dir();
-  GreyImage img;
-  img.width = 4;
-  img.height = 2;
-  img.pixels = {0, 254, 254, 254, 254, 254, 254, 0};
-  write_pgm_atomic(dir + "/m.pgm", img);
+  const std::string pixels{0, char(254), char(254), char(254), char(254), char(254), char(254), 0};
+  write_file(dir + "/m.pgm", "P5\n4 2\n255\n" + pixels);
   write_file(dir + "/w.yaml",
              "image: m.pgm\nresolution: 0.5\norigin: [-1.0, -2.0, 0.0]\nnegate: 0\noccupied_thresh: 0.65\n"
              "free_thresh: 0.196\nwall_height: 2.0\nstart: [0.5, 0.25, 1.0]\n"

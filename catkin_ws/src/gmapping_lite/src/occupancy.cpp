@@ -1,11 +1,9 @@
 #include "gmapping_lite/occupancy.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <fstream>
+
+#include "rosbook_env/map_files.h"
 
 namespace gmapping_lite {
 
@@ -52,57 +50,23 @@ OccupancyMap toOccupancy(const GridMap& map, double xmin, double ymin, double xm
   return out;
 }
 
-namespace {
-bool replaceFile(const std::string& path, const std::string& bytes, std::string* error) {
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) {
-      *error = "cannot write " + tmp;
-      return false;
-    }
-    f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    f.flush();
-    if (!f) {
-      *error = "failed writing " + tmp;
-      std::remove(tmp.c_str());
-      return false;
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    *error = "cannot rename " + tmp + " to " + path;
-    std::remove(tmp.c_str());
+bool writeMapFiles(const OccupancyMap& map, const std::string& base, std::string* error) {
+  rosbook_env::MapImage image;
+  image.width = map.width;
+  image.height = map.height;
+  image.resolution = map.resolution;
+  image.origin_x = map.origin_x;
+  image.origin_y = map.origin_y;
+  try {
+    // The cells are -1, 0 or 100: map_saver's rule draws them 205, 254 and 0.
+    image.pixels = rosbook_env::pixels_from_occupancy(map.data, map.width, map.height);
+    rosbook_env::write_map_files(
+        base, image, "CREATOR: gmapping_lite " + std::to_string(map.resolution) + " m/pix");
+  } catch (const rosbook_env::MapFileError& e) {
+    *error = e.what();
     return false;
   }
   return true;
-}
-
-std::string baseName(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-}  // namespace
-
-bool writeMapFiles(const OccupancyMap& map, const std::string& base, std::string* error) {
-  std::string pgm = "P5\n# CREATOR: gmapping_lite " + std::to_string(map.resolution) +
-                    " m/pix\n" + std::to_string(map.width) + " " + std::to_string(map.height) +
-                    "\n255\n";
-  const std::size_t header = pgm.size();
-  pgm.resize(header + static_cast<std::size_t>(map.width) * map.height);
-  for (int j = 0; j < map.height; ++j) {
-    const int row = map.height - 1 - j;  // image row 0 is the map's top
-    for (int i = 0; i < map.width; ++i) {
-      const int8_t v = map.at(i, j);
-      pgm[header + static_cast<std::size_t>(row) * map.width + i] =
-          static_cast<char>(v < 0 ? 205 : (v >= 100 ? 0 : 254));
-    }
-  }
-  char yaml[512];
-  std::snprintf(yaml, sizeof(yaml),
-                "image: %s.pgm\nresolution: %f\norigin: [%f, %f, 0.000000]\nnegate: 0\n"
-                "occupied_thresh: 0.65\nfree_thresh: 0.196\n\n",
-                baseName(base).c_str(), map.resolution, map.origin_x, map.origin_y);
-  return replaceFile(base + ".pgm", pgm, error) && replaceFile(base + ".yaml", yaml, error);
 }
 
 }  // namespace gmapping_lite

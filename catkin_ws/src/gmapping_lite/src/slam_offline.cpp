@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <string>
 #include <utility>
@@ -26,6 +25,7 @@
 #include "gmapping_lite/param_table.h"
 #include "gmapping_lite/particle_filter.h"
 #include "gmapping_lite/scan_pipeline.h"
+#include "rosbook_env/map_files.h"
 
 using namespace gmapping_lite;  // NOLINT: a program, not a header
 
@@ -209,18 +209,19 @@ int main(int argc, char** argv) {
   if (!o.trajectory.empty()) {
     std::vector<const TrajectoryNode*> nodes;
     for (auto n = best.trajectory.get(); n; n = n->parent.get()) nodes.push_back(n);
-    const std::string tmp = o.trajectory + ".tmp";
-    {
-      std::ofstream f(tmp);
-      f << "stamp,x,y,theta\n";
-      char line[128];
-      for (auto n = nodes.rbegin(); n != nodes.rend(); ++n) {
-        std::snprintf(line, sizeof(line), "%.6f,%.6f,%.6f,%.6f\n", (*n)->stamp, (*n)->pose.x,
-                      (*n)->pose.y, (*n)->pose.theta);
-        f << line;
-      }
+    std::string csv = "stamp,x,y,theta\n";
+    char line[128];
+    for (auto n = nodes.rbegin(); n != nodes.rend(); ++n) {
+      std::snprintf(line, sizeof(line), "%.6f,%.6f,%.6f,%.6f\n", (*n)->stamp, (*n)->pose.x,
+                    (*n)->pose.y, (*n)->pose.theta);
+      csv += line;
     }
-    std::rename(tmp.c_str(), o.trajectory.c_str());
+    try {
+      rosbook_env::write_files_atomically({{o.trajectory, csv}});
+    } catch (const rosbook_env::MapFileError& e) {
+      std::fprintf(stderr, "slam_offline: %s\n", e.what());
+      return 1;
+    }
   }
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();

@@ -1,4 +1,4 @@
-// Reading and writing Netpbm images (PGM/PPM), the format map_server and map_saver use.
+// Reading Netpbm images (PGM/PPM), the format map_server and map_saver use.
 #pragma once
 
 #include <cstdint>
@@ -24,10 +24,6 @@ class ImageError : public std::runtime_error {
 // Throws ImageError with the problem (not the file name; callers add it).
 GreyImage read_pnm(const std::string& path);
 
-// Writes a binary P5 PGM atomically (temporary file, then rename).
-void write_pgm_atomic(const std::string& path, const GreyImage& image);
-
-// Writes text atomically (temporary file, then rename).
-void write_text_atomic(const std::string& path, const std::string& text);
+// Writing a map: rosbook_env/map_files.h (bullet_turtlebot::write_map).
 
 }  // namespace bullet_turtlebot

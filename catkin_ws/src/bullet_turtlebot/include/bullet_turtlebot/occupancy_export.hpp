@@ -20,7 +20,8 @@ struct MapImage {
 MapImage rasterize_world(const World& world, double resolution, double margin = 0.5,
                          double min_height = 0.0);
 
-// Writes NAME.pgm and NAME.yaml (map_saver's format), atomically.
+// Writes NAME.pgm and NAME.yaml (map_saver's format) with rosbook_env's one writer
+// (map_files.h: atomic, the YAML last); throws rosbook_env::MapFileError naming the file.
 void write_map(const MapImage& map, const std::string& base_name);
 
 }  // namespace bullet_turtlebot

@@ -1,12 +1,10 @@
 #include "bullet_turtlebot/image_io.hpp"
 
-#include <unistd.h>
-
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <sstream>
 
 namespace bullet_turtlebot {
 namespace {
@@ -90,30 +88,6 @@ GreyImage read_pnm(const std::string& path) {
     image.pixels[i] = static_cast<std::uint8_t>(mean * 255.0 / maxval + 0.5);
   }
   return image;
-}
-
-void write_text_atomic(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw ImageError("cannot write " + tmp + ": " + std::strerror(errno));
-    out << text;
-    out.flush();
-    if (!out) throw ImageError("write failed for " + tmp);
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string error = std::strerror(errno);
-    std::remove(tmp.c_str());
-    throw ImageError("cannot rename " + tmp + " to " + path + ": " + error);
-  }
-}
-
-void write_pgm_atomic(const std::string& path, const GreyImage& image) {
-  std::ostringstream out;
-  out << "P5\n# CREATOR: bullet_turtlebot\n" << image.width << " " << image.height << "\n255\n";
-  out.write(reinterpret_cast<const char*>(image.pixels.data()),
-            static_cast<std::streamsize>(image.pixels.size()));
-  write_text_atomic(path, out.str());
 }
 
 }  // namespace bullet_turtlebot

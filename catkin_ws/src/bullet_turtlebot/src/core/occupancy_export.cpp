@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
+
+#include "rosbook_env/map_files.h"
 
 namespace bullet_turtlebot {
 namespace {
@@ -57,19 +58,15 @@ MapImage rasterize_world(const World& world, double resolution, double margin, d
 }
 
 void write_map(const MapImage& map, const std::string& base_name) {
-  const std::string pgm = base_name + ".pgm";
-  write_pgm_atomic(pgm, map.image);
-  const auto slash = pgm.find_last_of('/');
-  const std::string image_name = slash == std::string::npos ? pgm : pgm.substr(slash + 1);
-  std::ostringstream yaml;
-  yaml.precision(10);
-  yaml << "image: " << image_name << "\n"
-       << "resolution: " << map.resolution << "\n"
-       << "origin: [" << map.origin.x << ", " << map.origin.y << ", " << map.origin.yaw << "]\n"
-       << "negate: 0\n"
-       << "occupied_thresh: 0.65\n"
-       << "free_thresh: 0.196\n";
-  write_text_atomic(base_name + ".yaml", yaml.str());
+  rosbook_env::MapImage file;
+  file.width = map.image.width;
+  file.height = map.image.height;
+  file.pixels = map.image.pixels;
+  file.resolution = map.resolution;
+  file.origin_x = map.origin.x;
+  file.origin_y = map.origin.y;
+  file.origin_yaw = map.origin.yaw;
+  rosbook_env::write_map_files(base_name, file, "CREATOR: bullet_turtlebot");
 }
 
 }  // namespace bullet_turtlebot

@@ -22,8 +22,9 @@ struct OccupancyMap {
 OccupancyMap toOccupancy(const GridMap& map, double xmin, double ymin, double xmax, double ymax,
                          double occ_thresh);
 
-// map_saver format: PGM P5 (254 free, 0 occupied, 205 unknown, row 0 at the top) and YAML;
-// both written to temporary files and renamed into place. Returns false with `error` set.
+// map_saver format: PGM P5 (254 free, 0 occupied, 205 unknown, row 0 at the top) and YAML,
+// by rosbook_env's one writer (map_files.h: atomic, the YAML last). Returns false with
+// `error` set; the old files are then untouched.
 bool writeMapFiles(const OccupancyMap& map, const std::string& base, std::string* error);
 
 }  // namespace gmapping_lite
