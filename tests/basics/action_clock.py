@@ -9,6 +9,10 @@ ACTIVE, or a result), then jumps from event to event, waiting at each for what i
   - feedback k at k * FEEDBACK_PERIOD + TICK_LAG (k >= 1, before the goal's end);
   - the result at the goal's end;
   - with --cancel-at T: the client's cancel at T, then the result a nap later.
+With --client-out FILE (the client's stdout), each feedback is also waited for there, printed
+by the client, before the clock moves on: actionlib's client drops feedback it handles after
+the result (its state is DONE by then), and a clock that outran a stalled client would let
+the result come while all feedback was still queued, so that it printed none.
 rospy.sleep can overshoot a held time by one nap of the server (--poll, its preemption check
 period): when nothing comes within --credit wall seconds, the clock moves on by one nap (once
 for each event). So each event happens at its time, or at most that much later.
@@ -21,6 +25,7 @@ Writes JSON lines {"topic", "clock", ...} to --out for feedback and result (with
 
 import argparse
 import json
+import math
 import os
 import sys
 import threading
@@ -35,6 +40,7 @@ from rosgraph_msgs.msg import Clock
 NS = 1_000_000_000
 REPEAT = 0.02  # wall seconds between repeats of the held clock
 SIMPLE_PATIENCE = 5.0  # wall seconds for a --simple server's result before the second jump
+FEEDBACK_LINE = "[Feedback] Time elapsed:"  # fancy_action_client's first line of a feedback
 
 
 class ActionClock:
@@ -86,6 +92,22 @@ class ActionClock:
         with self.cond:
             return len(self.seen[kind])
 
+    def handled(self, kind, total):
+        """`total` messages of `kind` seen; feedback also printed by the client (--client-out)."""
+        if self.count(kind) < total:
+            return False
+        return kind != "feedback" or self.client_printed() >= total
+
+    def client_printed(self):
+        """Feedback blocks the client has printed (each starts with its elapsed line)."""
+        if not self.args.client_out:
+            return math.inf
+        try:
+            with open(self.args.client_out) as out:
+                return out.read().count(FEEDBACK_LINE)
+        except FileNotFoundError:
+            return 0
+
     def hold_until(self, ready, what, credits=0, patience=None):
         """Repeat the clock until ready(); after --credit wall seconds without it, move on by
         one --poll (up to `credits` times). With `patience` (wall seconds), return False
@@ -117,7 +139,7 @@ class ActionClock:
         start_ns = self.clock_ns
         started = "active" if args.simple else "feedback"
         self.hold_until(
-            lambda: self.count(started) or self.count("result"), "the server to start a goal"
+            lambda: self.handled(started, 1) or self.count("result"), "the server to start a goal"
         )
         wait = args.goal
         events = []  # (seconds after the goal, what is due, how many by then)
@@ -145,7 +167,7 @@ class ActionClock:
             # (The server's result also shows that a cancel came, should this clock have
             # missed the client's message.)
             self.hold_until(
-                lambda k=kind, n=total: self.count(k) >= n or self.result_seen(), kind, credits
+                lambda k=kind, n=total: self.handled(k, n) or self.result_seen(), kind, credits
             )
         self.out.close()
 
@@ -159,6 +181,7 @@ def main():
     parser.add_argument("--cancel-at", type=float, help="sim s after the goal: the client cancels")
     parser.add_argument("--free-until", help="run the clock freely until this file exists")
     parser.add_argument("--simple", action="store_true", help="a server without feedback")
+    parser.add_argument("--client-out", help="the client's stdout: wait for its printed feedback")
     parser.add_argument("--credit", type=float, default=1.0)
     parser.add_argument("--timeout", type=float, default=60.0)
     args = parser.parse_args(rospy.myargv()[1:])

@@ -84,15 +84,19 @@ std::set<std::string> connected_publishers(const std::string& topic) {
 
 }  // namespace
 
+bool same_master(const MasterIdentity& known, const MasterIdentity& seen) {
+  return seen == known || (seen.pid == known.pid && known.run_id.empty());
+}
+
 struct MasterWatch::State {
   explicit State(double period) : poll(period > 0 ? period : 1.0) {}
-  bool master_identity(std::string* identity) const;
+  bool master_identity(MasterIdentity* identity) const;
   void snapshot();
   bool register_all();
   std::string restore_params(bool publishes_clock);
 
   const double poll;
-  std::string identity;
+  MasterIdentity identity;
   std::set<std::string> services;
   XmlRpcValue private_params;
   bool have_private_params = false;
@@ -126,14 +130,15 @@ void MasterWatch::watch_service(const std::string& name) {
   state_->services.insert(name);
 }
 
-bool MasterWatch::State::master_identity(std::string* identity) const {
+bool MasterWatch::State::master_identity(MasterIdentity* identity) const {
   XmlRpcValue pid;
   if (!master_call("getPid", caller_args(), &pid) || pid.getType() != XmlRpcValue::TypeInt) return false;
   XmlRpcValue args = caller_args();
   args[1] = std::string("/run_id");
   XmlRpcValue run_id;
   const bool have_run_id = master_call("getParam", args, &run_id) && run_id.getType() == XmlRpcValue::TypeString;
-  *identity = std::to_string(static_cast<int>(pid)) + " " + (have_run_id ? static_cast<std::string>(run_id) : "");
+  identity->pid = static_cast<int>(pid);
+  identity->run_id = have_run_id ? static_cast<std::string>(run_id) : "";
   return true;
 }
 
@@ -173,11 +178,13 @@ void MasterWatch::run(std::shared_ptr<State> state) {
   while (!state->wake.wait_for(lock, period, [&state] { return state->stop; })) {
     lock.unlock();
     try {
-      std::string identity;
+      MasterIdentity identity;
       if (ros::isShuttingDown()) {
       } else if (!state->master_identity(&identity)) {
         // No master now: wait for one. Only a new master (pid, run_id) is acted on.
-      } else if (identity != state->identity) {
+      } else if (same_master(state->identity, identity)) {
+        state->identity = identity;  // with the run_id roslaunch has set since
+      } else {
         if (state->register_all()) {
           state->identity = identity;
           warned = false;
@@ -258,9 +265,12 @@ bool MasterWatch::State::register_all() {
   bool publishes_clock = false;
   for (const auto& topic : publications) publishes_clock = publishes_clock || topic.first == "/clock";
   const std::string restored = restore_params(publishes_clock);
-  ROS_INFO("master_watch: new master at %s: registered %zu publishers, %zu subscribers, %d services again%s",
-           ros::master::getURI().c_str(), publications.size(), subscriptions.size(), registered_services,
-           restored.empty() ? "" : ("; restored " + restored).c_str());
+  // Only once everything is in: a partial attempt is retried whole on the next poll (the
+  // caller warns once), and one restart is one message.
+  if (ok)
+    ROS_INFO("master_watch: new master at %s: registered %zu publishers, %zu subscribers, %d services again%s",
+             ros::master::getURI().c_str(), publications.size(), subscriptions.size(), registered_services,
+             restored.empty() ? "" : ("; restored " + restored).c_str());
   return ok;
 }
 

@@ -7,7 +7,8 @@ before the restart go on working, peer to peer).
 
 Nodes call `survive_master_restart()` once, after `rospy.init_node()`. A daemon thread asks
 the master for its pid and `/run_id` once a wall second (two small XML-RPC calls); when
-they change (a new master; the same one answering late changes nothing), it registers every
+they change (a new master; the same one answering late, or getting its `/run_id` a moment
+after it first answered, changes nothing: see `same_master`), it registers every
 publisher, subscriber and service of the node again, with the node's own XML-RPC URI, tells
 the node's subscribers about the publishers the new master already knows, and puts back the
 node's private parameters (as they were when the watch started) and, if the node publishes
@@ -54,6 +55,17 @@ def survive_master_restart(poll=POLL):
     return thread
 
 
+def same_master(known, seen):
+    """Whether the master that answers now, `seen` (pid, run_id), is `known`, the one the node
+    registered with. roscore's roslaunch sets /run_id after its rosmaster answers (it checks
+    for the master every 0.1 s, then sets it), so a watch that registered in between knows
+    that master's pid with no run_id yet: the run_id arriving later is the same master, not
+    a second restart. (A new master with the very same pid is told apart by its run_id.)"""
+    if known is None or seen is None:
+        return known == seen
+    return seen == known or (seen[0] == known[0] and known[1] == "")
+
+
 class _MasterWatch:
     def __init__(self, master_uri, node_uri):
         self.master_uri = master_uri
@@ -91,7 +103,10 @@ class _MasterWatch:
                 identity = self.master_identity()
                 # Only a new master (its pid and run_id) is acted on: the same master slow to
                 # answer (a loaded machine) or unreachable for a while still knows the node.
-                if identity is None or identity == self.identity:
+                if identity is None:
+                    continue
+                if same_master(self.identity, identity):
+                    self.identity = identity  # with the run_id roslaunch has set since
                     continue
                 self.register_all()
                 self.identity, warned = identity, False
