@@ -4,6 +4,7 @@ map with map_saver, scores it against ground truth and draws the overlay. A shor
 
 import json
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -17,7 +18,7 @@ sys.path.insert(0, str(REPO / "tests"))
 from roskit import descendants, ros_environment  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from demo_run import run_demo  # noqa: E402
+from demo_run import SIM_SECONDS, run_demo  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -62,6 +63,24 @@ def test_demo_prints_progress_and_sane_figures(main_job):
     for key, value in figures.items():
         if isinstance(value, float):
             assert value == value and abs(value) != float("inf"), (key, value)
+
+
+@pytest.mark.slow
+@pytest.mark.timeout(960)
+def test_demo_stops_the_clock_when_the_time_is_up(main_job):
+    # Saving the map takes wall seconds; at 4x they used to add minutes of driving to the bag
+    # and the figures. The simulator is paused first, so nothing is recorded after that time.
+    done, out = main_job
+    assert done.returncode == 0, done.stdout[-4000:] + done.stderr[-4000:]
+    paused = re.search(r"simulation paused at ([0-9.]+) s of sim time", done.stdout)
+    assert paused, done.stdout
+    import rosbag
+
+    with rosbag.Bag(str(out / "office.bag")) as bag:
+        start, end = bag.get_start_time(), bag.get_end_time()
+    paused_at = float(paused.group(1))
+    assert paused_at - start >= SIM_SECONDS / 2, (start, paused_at)  # the bag starts late
+    assert end <= paused_at + 1e-3, (end, paused_at)
 
 
 def test_demo_rejects_nonsense_arguments(tmp_path):
