@@ -78,6 +78,21 @@ sensor_msgs::CameraInfo camera_info(const CameraConfig& camera, const std::strin
   return info;
 }
 
+// An Image of the camera's size with everything but the pixels (little-endian rows of
+// `bytes_per_pixel` each).
+sensor_msgs::Image image_header(const CameraConfig& camera, const std::string& frame, const ros::Time& stamp,
+                                const std::string& encoding, uint32_t bytes_per_pixel) {
+  sensor_msgs::Image image;
+  image.header.stamp = stamp;
+  image.header.frame_id = frame;
+  image.width = static_cast<uint32_t>(camera.width);
+  image.height = static_cast<uint32_t>(camera.height);
+  image.encoding = encoding;
+  image.is_bigendian = 0;
+  image.step = image.width * bytes_per_pixel;
+  return image;
+}
+
 template <typename T>
 T param(const ros::NodeHandle& pnh, const std::string& name, T fallback) {
   T value;
@@ -346,14 +361,7 @@ void RosSimulator::publish_cameras() {
     std::vector<float> depth;
     render_depth(sim_.world(), camera_, sim_.depth_sensor_pose(), &depth);
     if (want_depth) {
-      sensor_msgs::Image image;
-      image.header.stamp = now;
-      image.header.frame_id = "camera_depth_optical_frame";
-      image.width = static_cast<uint32_t>(camera_.width);
-      image.height = static_cast<uint32_t>(camera_.height);
-      image.encoding = "32FC1";
-      image.is_bigendian = 0;
-      image.step = image.width * 4;
+      sensor_msgs::Image image = image_header(camera_, "camera_depth_optical_frame", now, "32FC1", 4);
       image.data.resize(depth.size() * 4);
       std::memcpy(image.data.data(), depth.data(), image.data.size());
       depth_pub_.publish(image);
@@ -392,13 +400,7 @@ void RosSimulator::publish_cameras() {
     }
   }
   if (rgb_pub_.getNumSubscribers() > 0) {
-    sensor_msgs::Image image;
-    image.header.stamp = now;
-    image.header.frame_id = "camera_rgb_optical_frame";
-    image.width = static_cast<uint32_t>(camera_.width);
-    image.height = static_cast<uint32_t>(camera_.height);
-    image.encoding = "rgb8";
-    image.step = image.width * 3;
+    sensor_msgs::Image image = image_header(camera_, "camera_rgb_optical_frame", now, "rgb8", 3);
     render_rgb(sim_.world(), camera_, sim_.rgb_sensor_pose(), &image.data);
     rgb_pub_.publish(image);
   }
