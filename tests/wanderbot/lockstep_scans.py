@@ -15,7 +15,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parent / "tools"))
 from fake_scan import parse_plan, scan_at  # noqa: E402
-from lockstep_clock import Lockstep, LockstepError, input_publisher  # noqa: E402
+from lockstep_clock import Lockstep, input_publisher, run_program  # noqa: E402
 
 
 def main():
@@ -40,13 +40,7 @@ def main():
         pub.publish(scan)
         return 0
 
-    try:
-        clock.connect()
-        clock.run(args.ticks, on_tick)
-    except LockstepError as error:
-        print(f"lockstep_scans: {error}", file=sys.stderr)
-        return 4
-    return 0
+    return run_program(clock, args.ticks, on_tick, "lockstep_scans")
 
 
 if __name__ == "__main__":
