@@ -16,15 +16,7 @@ sys.path.insert(0, str(REPO / "catkin_ws" / "src" / "bullet_turtlebot" / "src"))
 from bullet_turtlebot import world_check  # noqa: E402
 from bullet_turtlebot.world_families import generate  # noqa: E402
 from bullet_turtlebot.world_file import write_world  # noqa: E402
-from kinematic_sim import (  # noqa: E402
-    CAMERA_X,
-    GridWorld,
-    Mapper,
-    RunResult,
-    _clearance,
-    _coverage,
-    cast_fan,
-)
+from kinematic_sim import GridWorld, KinematicBase, RunResult  # noqa: E402
 
 
 def family_world(family, seed, folder):
@@ -54,12 +46,7 @@ def explore(
     a robot standing still gets no new map), and the explorer gets everything the node
     gives it. `on_step(now, explorer, mapper, reachable)` is called after each control
     step."""
-    x, y, yaw = start
-    last_update = (x, y, yaw, True)
-    mapper = Mapper(world)
-    reachable = world.free_region(x, y)
-    clearance_grid = world.clearance()
-    travelled, collisions = 0.0, 0
+    robot = KinematicBase(world, start, robot_radius, update)
     next_map = next_scan = 0.0
     map_stamp = None
     integrated = False
@@ -67,23 +54,18 @@ def explore(
     now = 0.0
     while now < seconds:
         if now >= next_scan:
-            sx, sy = x + CAMERA_X * math.cos(yaw), y + CAMERA_X * math.sin(yaw)
-            angles, ranges = cast_fan(world, sx, sy, yaw)
-            moved = math.hypot(x - last_update[0], y - last_update[1])
-            turned = abs(math.remainder(yaw - last_update[2], 2 * math.pi))
-            if moved >= update[0] or turned >= update[1] or last_update[3]:
-                mapper.integrate(sx, sy, yaw, angles, ranges)
-                last_update = (x, y, yaw, False)
-                integrated = True
-            ahead = _clearance(angles, ranges, robot_radius)
+            ahead, scan_integrated = robot.scan()
+            integrated = integrated or scan_integrated
             next_scan += scan_period
         if now >= next_map and integrated:
-            planner.set_map(mapper.occupancy(), world.resolution, world.origin_x, world.origin_y)
+            planner.set_map(
+                robot.mapper.occupancy(), world.resolution, world.origin_x, world.origin_y
+            )
             map_stamp = now
             next_map = now + map_period
             integrated = False
         if explorer.wants_plan(now, map_stamp):
-            plan = planner.plan(x, y, **explorer.plan_inputs(now, map_stamp))
+            plan = planner.plan(robot.x, robot.y, **explorer.plan_inputs(now, map_stamp))
             explorer.accept_plan(
                 plan,
                 now,
@@ -91,27 +73,18 @@ def explore(
                 known_area=planner.known_free_area(),
                 start_blocked=planner.start_blocked,
             )
-        linear, angular = explorer.control(now, x, y, yaw, ahead)
-        nx = x + linear * math.cos(yaw) * dt
-        ny = y + linear * math.sin(yaw) * dt
-        row, col = world.cell(nx, ny)
-        if clearance_grid[row, col] < robot_radius:
-            collisions += 1
-            explorer.bumped(now)
-        else:
-            travelled += math.hypot(nx - x, ny - y)
-            x, y = nx, ny
-        yaw = math.atan2(math.sin(yaw + angular * dt), math.cos(yaw + angular * dt))
+        linear, angular = explorer.control(now, robot.x, robot.y, robot.yaw, ahead)
+        robot.drive(linear, angular, dt, explorer, now)
         now += dt
         if on_step is not None:
-            on_step(now, explorer, mapper, reachable)
+            on_step(now, explorer, robot.mapper, robot.reachable)
         if explorer.done:
             break
     return RunResult(
-        _coverage(mapper, reachable),
+        robot.coverage(),
         now,
-        travelled,
-        collisions,
+        robot.travelled,
+        robot.collisions,
         explorer.done,
         explorer.goals_reached,
         {},

@@ -143,6 +143,54 @@ class RunResult:
     coverage_at: dict  # sim seconds -> coverage
 
 
+class KinematicBase:
+    """The robot of a run in `world`: its pose, the camera's scans mapped by a Mapper (a
+    scan integrated only after `update` = (metres, radians) of motion, as gmapping does)
+    and differential-drive motion that the bumper stops at `robot_radius` from a wall."""
+
+    def __init__(self, world, start, robot_radius, update):
+        self.world = world
+        self.x, self.y, self.yaw = start
+        self.robot_radius = robot_radius
+        self.update = update
+        self.mapper = Mapper(world)
+        self.reachable = world.free_region(self.x, self.y)
+        self.travelled, self.collisions = 0.0, 0
+        self._clearance_grid = world.clearance()
+        self._last_update = (self.x, self.y, self.yaw, True)
+
+    def scan(self):
+        """(clearance ahead, whether the mapper integrated it) of one scan from here."""
+        x, y, yaw = self.x, self.y, self.yaw
+        sx, sy = x + CAMERA_X * math.cos(yaw), y + CAMERA_X * math.sin(yaw)
+        angles, ranges = cast_fan(self.world, sx, sy, yaw)
+        moved = math.hypot(x - self._last_update[0], y - self._last_update[1])
+        turned = abs(math.remainder(yaw - self._last_update[2], 2 * math.pi))
+        integrated = moved >= self.update[0] or turned >= self.update[1] or self._last_update[3]
+        if integrated:
+            self.mapper.integrate(sx, sy, yaw, angles, ranges)
+            self._last_update = (x, y, yaw, False)
+        return _clearance(angles, ranges, self.robot_radius), integrated
+
+    def drive(self, linear, angular, dt, explorer, now):
+        """Move for `dt` at (linear, angular); into a wall, the base stays and the explorer
+        hears the bumper."""
+        nx = self.x + linear * math.cos(self.yaw) * dt
+        ny = self.y + linear * math.sin(self.yaw) * dt
+        row, col = self.world.cell(nx, ny)
+        if self._clearance_grid[row, col] < self.robot_radius:
+            self.collisions += 1
+            explorer.bumped(now)
+        else:
+            self.travelled += math.hypot(nx - self.x, ny - self.y)
+            self.x, self.y = nx, ny
+        turned = self.yaw + angular * dt
+        self.yaw = math.atan2(math.sin(turned), math.cos(turned))
+
+    def coverage(self):
+        return _coverage(self.mapper, self.reachable)
+
+
 def explore(
     world,
     start,
@@ -159,12 +207,7 @@ def explore(
     """Drive `explorer` (exploration.Explorer) with `planner` (map_planner.MapPlanner) in
     `world` from `start` (x, y, yaw) for `seconds` of simulated time. The map integrates
     a scan only after `update` = (metres, radians) of motion, as gmapping does."""
-    x, y, yaw = start
-    last_update = (x, y, yaw, True)
-    mapper = Mapper(world)
-    reachable = world.free_region(x, y)
-    clearance_grid = world.clearance()
-    travelled, collisions = 0.0, 0
+    robot = KinematicBase(world, start, robot_radius, update)
     next_map = next_scan = 0.0
     map_stamp = None
     ahead = math.inf
@@ -172,53 +215,37 @@ def explore(
     now = 0.0
     while now < seconds:
         if now >= next_scan:
-            sx, sy = x + CAMERA_X * math.cos(yaw), y + CAMERA_X * math.sin(yaw)
-            angles, ranges = cast_fan(world, sx, sy, yaw)
-            # Like gmapping: integrate a scan only after moving or turning enough.
-            moved = math.hypot(x - last_update[0], y - last_update[1])
-            turned = abs(math.remainder(yaw - last_update[2], 2 * math.pi))
-            if moved >= update[0] or turned >= update[1] or last_update[3]:
-                mapper.integrate(sx, sy, yaw, angles, ranges)
-                last_update = (x, y, yaw, False)
-            ahead = _clearance(angles, ranges, robot_radius)
+            ahead, _ = robot.scan()
             next_scan += scan_period
         if now >= next_map:
-            planner.set_map(mapper.occupancy(), world.resolution, world.origin_x, world.origin_y)
+            planner.set_map(
+                robot.mapper.occupancy(), world.resolution, world.origin_x, world.origin_y
+            )
             map_stamp = now
             next_map += map_period
         if explorer.wants_plan(now, map_stamp):
             plan = planner.plan(
-                x,
-                y,
+                robot.x,
+                robot.y,
                 explorer.excluded_points(now),
                 explorer.current_goal,
                 explorer.pending_views(map_stamp),
                 explorer.excluded_frontiers(now),
             )
             explorer.accept_plan(plan, now, map_stamp)
-        linear, angular = explorer.control(now, x, y, yaw, ahead)
-        nx = x + linear * math.cos(yaw) * dt
-        ny = y + linear * math.sin(yaw) * dt
-        row, col = world.cell(nx, ny)
-        if clearance_grid[row, col] < robot_radius:
-            # The bumper: the base does not move into the wall, and the explorer hears it.
-            collisions += 1
-            explorer.bumped(now)
-        else:
-            travelled += math.hypot(nx - x, ny - y)
-            x, y = nx, ny
-        yaw = math.atan2(math.sin(yaw + angular * dt), math.cos(yaw + angular * dt))
+        linear, angular = explorer.control(now, robot.x, robot.y, robot.yaw, ahead)
+        robot.drive(linear, angular, dt, explorer, now)
         now += dt
         for mark in checkpoints:
             if mark not in coverage_at and now >= mark:
-                coverage_at[mark] = _coverage(mapper, reachable)
+                coverage_at[mark] = robot.coverage()
         if explorer.done:
             break
     return RunResult(
-        _coverage(mapper, reachable),
+        robot.coverage(),
         now,
-        travelled,
-        collisions,
+        robot.travelled,
+        robot.collisions,
         explorer.done,
         explorer.goals_reached,
         coverage_at,

@@ -12,7 +12,7 @@ import pytest
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
-from kinematic_sim import WORLDS  # noqa: E402
+from explore_launch import slam_node_available, start_exploration  # noqa: E402
 from roskit import read_jsonl  # noqa: E402
 
 # Sim speed 8; explore_sim.launch has the simulator wait for the explorer if it lags
@@ -23,25 +23,6 @@ SPEED = float(os.environ.get("EXPLORER_SIM_SPEED", "8"))
 # the start room and the opening spin show is about 21%); the bench measures full coverage.
 SIM_SECONDS = float(os.environ.get("EXPLORER_SIM_SECONDS", "300"))
 COVERAGE_AT_END = 0.60
-PYTHON = "/usr/bin/python3"
-
-
-def world_start(world):
-    for line in (WORLDS / f"{world}.yaml").read_text().splitlines():
-        if line.startswith("start:"):
-            return [float(v) for v in line.split(":", 1)[1].strip(" []").split(",")]
-    return [0.0, 0.0, 0.0]
-
-
-def slam_node_available():
-    """gmapping_lite's slam_gmapping built in the sourced workspace?"""
-    done = subprocess.run(["rospack", "find", "gmapping_lite"], capture_output=True, text=True)
-    if done.returncode != 0:
-        return False
-    for prefix in os.environ.get("CMAKE_PREFIX_PATH", "").split(":"):
-        if prefix and (Path(prefix) / "lib" / "gmapping_lite" / "slam_gmapping").exists():
-            return True
-    return False
 
 
 def records(path):
@@ -55,42 +36,7 @@ def run_exploration(ros, tmp_path, world="office", use_slam=True):
         or subprocess.run(["rospack", "find", "bullet_turtlebot"], capture_output=True).returncode
     ):
         pytest.skip("bullet_turtlebot is not in this workspace")
-    truth = tmp_path / "truth"
-    ros.run(["rosrun", "bullet_turtlebot", "world_to_map", world, "-f", str(truth)])
-    common = [f"world:={world}", f"speed:={SPEED}", "seed:=1", "start_paused:=true"]
-    if use_slam:
-        ros.start(["roslaunch", "explorer", "explore_sim.launch", *common], name="explore_sim")
-    else:
-        # Stand-in for SLAM: perfect odometry, identity map -> odom, a scan-to-grid mapper.
-        ros.start(
-            ["roslaunch", "bullet_turtlebot", "simulator.launch", "odom_noise:=false", *common],
-            name="sim",
-        )
-        ros.start([PYTHON, str(HERE / "stand_in_mapper.py")], name="stand_in_mapper")
-        ros.start(["roslaunch", "explorer", "explore.launch"], name="explorer")
-    ros.wait_for_service("simulator/unpause", timeout=90)
-    ros.wait_for_topic("explorer/done", timeout=60)
-    out = tmp_path / "coverage.jsonl"
-    start = world_start(world)
-    ros.start(
-        [
-            PYTHON,
-            str(HERE / "coverage_recorder.py"),
-            "--truth",
-            f"{truth}.yaml",
-            "--start",
-            *map(str, start),
-            "--out",
-            str(out),
-            "--period",
-            "10",
-            "--save-map",
-            str(tmp_path / "map.pgm"),
-        ],
-        name="coverage_recorder",
-    )
-    ros.wait_for(lambda: records(out), 60, "the coverage recorder")
-    ros.run(["rosservice", "call", "/simulator/unpause"])
+    out = start_exploration(ros, tmp_path, world, SPEED, use_slam, tmp_path / "map.pgm")
     deadline = time.monotonic() + SIM_SECONDS / SPEED * 6 + 120
     while time.monotonic() < deadline:
         got = records(out)

@@ -3,7 +3,6 @@ stand-in mapper where gmapping_lite is not built) on ring seed 5, a 47 m loop co
 whose corners cast the grazing shadows that used to make the explorer give frontiers up.
 It keeps exploring: `explorer/done` never turns true while much of the loop is unmapped."""
 
-import os
 import subprocess
 import sys
 from pathlib import Path
@@ -12,27 +11,12 @@ import pytest
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
+from explore_launch import slam_node_available, start_exploration  # noqa: E402
 from roskit import read_jsonl  # noqa: E402
 
-PYTHON = "/usr/bin/python3"
 FAMILY, SEED = "ring", 5
 SIM_SECONDS = 300.0
 SPEED = 5.0
-
-
-def slam_node_available():
-    """gmapping_lite's slam_gmapping built in the sourced workspace?"""
-    for prefix in os.environ.get("CMAKE_PREFIX_PATH", "").split(":"):
-        if prefix and (Path(prefix) / "lib" / "gmapping_lite" / "slam_gmapping").exists():
-            return True
-    return False
-
-
-def world_start(world_yaml):
-    for line in Path(world_yaml).read_text().splitlines():
-        if line.startswith("start:"):
-            return [float(v) for v in line.split(":", 1)[1].strip(" []").split(",")]
-    return [0.0, 0.0, 0.0]
 
 
 @pytest.mark.slow
@@ -43,27 +27,7 @@ def test_explorer_keeps_exploring_a_ring_world(ros, tmp_path):
     make = ["rosrun", "bullet_turtlebot", "make_worlds.py", "--family", FAMILY]
     ros.run([*make, "--seed", str(SEED), str(tmp_path)], timeout=60)
     world = tmp_path / f"{FAMILY}_{SEED}.yaml"
-    truth = tmp_path / "truth"
-    ros.run(["rosrun", "bullet_turtlebot", "world_to_map", str(world), "-f", str(truth)])
-    # explore_sim.launch's simulator waits for a lagging driver (wait_for_commands 0.3).
-    common = [f"world:={world}", f"speed:={SPEED}", "seed:=1", "start_paused:=true"]
-    if slam_node_available():
-        ros.start(["roslaunch", "explorer", "explore_sim.launch", *common], name="explore_sim")
-    else:
-        ros.start(
-            ["roslaunch", "bullet_turtlebot", "simulator.launch", "odom_noise:=false", *common],
-            name="sim",
-        )
-        ros.start([PYTHON, str(HERE / "stand_in_mapper.py")], name="stand_in_mapper")
-        ros.start(["roslaunch", "explorer", "explore.launch"], name="explorer")
-    ros.wait_for_service("simulator/unpause", timeout=90)
-    ros.wait_for_topic("explorer/done", timeout=60)
-    out = tmp_path / "coverage.jsonl"
-    recorder = [PYTHON, str(HERE / "coverage_recorder.py"), "--truth", f"{truth}.yaml"]
-    recorder += ["--start", *map(str, world_start(world)), "--out", str(out), "--period", "10"]
-    ros.start(recorder, name="coverage_recorder")
-    ros.wait_for(lambda: read_jsonl(out), 60, "the coverage recorder")
-    ros.run(["rosservice", "call", "/simulator/unpause"])
+    out = start_exploration(ros, tmp_path, world, SPEED, slam_node_available())
 
     def finished():
         got = read_jsonl(out)

@@ -73,30 +73,28 @@ def make_cloud(stamp, wall):
     return cloud
 
 
-def make_rgb(stamp, width=320, height=240):
-    pixels = np.empty((height, width, 3), dtype=np.uint8)
-    pixels[: height // 2] = SKY
-    pixels[height // 2 :] = FLOOR
+def _image(stamp, frame_id, pixels, encoding):
+    """A sensor_msgs/Image of a C-contiguous array (rows of `pixels` are the image rows)."""
     image = Image()
     image.header.stamp = stamp
-    image.header.frame_id = "camera_rgb_optical_frame"
-    image.height, image.width = height, width
-    image.encoding = "rgb8"
-    image.step = 3 * width
+    image.header.frame_id = frame_id
+    image.height, image.width = pixels.shape[:2]
+    image.encoding = encoding
+    image.step = pixels.strides[0]
     image.data = pixels.tobytes()
     return image
 
 
+def make_rgb(stamp, width=320, height=240):
+    pixels = np.empty((height, width, 3), dtype=np.uint8)
+    pixels[: height // 2] = SKY
+    pixels[height // 2 :] = FLOOR
+    return _image(stamp, "camera_rgb_optical_frame", pixels, "rgb8")
+
+
 def make_depth(stamp, wall, width=320, height=240):
     depth = np.full((height, width), wall, dtype=np.float32)
-    image = Image()
-    image.header.stamp = stamp
-    image.header.frame_id = "camera_depth_optical_frame"
-    image.height, image.width = height, width
-    image.encoding = "32FC1"
-    image.step = 4 * width
-    image.data = depth.tobytes()
-    return image
+    return _image(stamp, "camera_depth_optical_frame", depth, "32FC1")
 
 
 def make_room_map(stamp, size_m=8.0, resolution=0.05, room_m=5.0):

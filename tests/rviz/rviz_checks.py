@@ -38,6 +38,16 @@ def start_fake_robot(ros, *fake_args):
     ros.wait_for_topic("/tf_static")
 
 
+def drive_teleop(ros, linear, angular):
+    """Drive the simulated robot with a constant command at 10 Hz through the book's teleop
+    input of the command mux."""
+    twist = f"{{linear: {{x: {linear}}}, angular: {{z: {angular}}}}}"
+    ros.start(
+        ["rostopic", "pub", "-r", "10", "/cmd_vel_mux/input/teleop", "geometry_msgs/Twist", twist],
+        name="teleop",
+    )
+
+
 def measure(rviz, img):
     """Masks and counts of the colour key inside the 3D view."""
     view = rviz.view(img)

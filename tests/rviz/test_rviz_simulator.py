@@ -68,12 +68,7 @@ def test_top_down_view_follows_the_simulated_robot(ros):
         name="simulator",
     )
     ros.wait_for_topic("/odom", timeout=30)
-    # Drive a circle (radius 1 m) through the book's teleop input of the command mux.
-    twist = "{linear: {x: 0.3}, angular: {z: 0.3}}"
-    ros.start(
-        ["rostopic", "pub", "-r", "10", "/cmd_vel_mux/input/teleop", "geometry_msgs/Twist", twist],
-        name="teleop",
-    )
+    rc.drive_teleop(ros, 0.3, 0.3)  # a circle of radius 1 m
     with rs.RvizSession(rc.RVIZ / "top_down.rviz", ros.env, ros.workdir / "rviz") as rviz:
 
         def ready(img):

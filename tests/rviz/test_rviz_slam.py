@@ -41,11 +41,7 @@ def test_mapping_view_while_slam_builds_the_map(ros):
     slam = ["rosrun", "gmapping_lite", "slam_gmapping", "_map_update_interval:=2.0"]
     slam += [f"_{k}:={v}" for k, v in (("xmin", -15), ("ymin", -15), ("xmax", 15), ("ymax", 15))]
     ros.start(slam, name="slam_gmapping")
-    twist = f"{{linear: {{x: {LINEAR}}}, angular: {{z: {ANGULAR}}}}}"
-    ros.start(
-        ["rostopic", "pub", "-r", "10", "/cmd_vel_mux/input/teleop", "geometry_msgs/Twist", twist],
-        name="teleop",
-    )
+    rc.drive_teleop(ros, LINEAR, ANGULAR)
     # rviz starts while SLAM makes its first map; the Map display subscribes whenever.
     with rs.RvizSession(rc.RVIZ / "mapping.rviz", ros.env, ros.workdir / "rviz") as rviz:
 

@@ -204,6 +204,18 @@ class Lockstep:
             self.out.close()
 
 
+def run_program(clock, ticks, on_tick, prog):
+    """A lock-step helper program's run: connect, advance `ticks` ticks; its exit status,
+    0, or 4 with the error on stderr."""
+    try:
+        clock.connect()
+        clock.run(ticks, on_tick)
+    except LockstepError as error:
+        print(f"{prog}: {error}", file=sys.stderr)
+        return 4
+    return 0
+
+
 def input_publisher(topic, msg_class):
     """A publisher for what on_tick injects. Synchronous (queue_size=None): publish() has
     written the message to every subscriber's socket before the next tick's /clock goes
@@ -305,13 +317,7 @@ def main():
             os.write(args.tty_fd, typing[tick].encode())
         return echoes
 
-    try:
-        clock.connect()
-        clock.run(args.ticks, on_tick)
-    except LockstepError as error:
-        print(f"lockstep_clock: {error}", file=sys.stderr)
-        return 4
-    return 0
+    return run_program(clock, args.ticks, on_tick, "lockstep_clock")
 
 
 if __name__ == "__main__":

@@ -28,28 +28,39 @@ def ranges(pattern):
     raise SystemExit(f"fake_scan: unknown pattern {pattern}")
 
 
-def main():
+def parse_plan(items):
+    """[(seconds, pattern), ...] of PATTERN@SECONDS items; an unknown pattern exits here."""
     plan = []
-    for arg in rospy.myargv()[1:]:
-        pattern, _, at = arg.partition("@")
+    for item in items:
+        pattern, _, at = item.partition("@")
         ranges(pattern)
         plan.append((float(at), pattern))
+    return plan
+
+
+def scan_at(plan, now, stamp):
+    """The LaserScan stamped `stamp` of the last pattern in `plan` due by `now` seconds
+    ("clear" before the first)."""
+    current = [p for at, p in plan if at <= now]
+    scan = LaserScan()
+    scan.header.stamp = stamp
+    scan.header.frame_id = "camera_depth_frame"
+    scan.angle_min, scan.angle_max = -0.5, 0.5
+    scan.angle_increment = 1.0 / (N - 1)
+    scan.range_min, scan.range_max = 0.45, 8.0
+    scan.ranges = ranges(current[-1] if current else "clear")
+    return scan
+
+
+def main():
+    plan = parse_plan(rospy.myargv()[1:])
     rospy.init_node("fake_scan")
     pub = rospy.Publisher("scan", LaserScan, queue_size=10)
     while pub.get_num_connections() == 0 and not rospy.is_shutdown():
         time.sleep(0.02)
     start = time.monotonic()
     while not rospy.is_shutdown():
-        elapsed = time.monotonic() - start
-        current = [p for at, p in plan if at <= elapsed]
-        scan = LaserScan()
-        scan.header.stamp = rospy.Time.now()
-        scan.header.frame_id = "camera_depth_frame"
-        scan.angle_min, scan.angle_max = -0.5, 0.5
-        scan.angle_increment = 1.0 / (N - 1)
-        scan.range_min, scan.range_max = 0.45, 8.0
-        scan.ranges = ranges(current[-1] if current else "clear")
-        pub.publish(scan)
+        pub.publish(scan_at(plan, time.monotonic() - start, rospy.Time.now()))
         time.sleep(0.1)
 
 

@@ -14,8 +14,8 @@ from sensor_msgs.msg import LaserScan
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parent / "tools"))
-from fake_scan import N, ranges  # noqa: E402
-from lockstep_clock import Lockstep, LockstepError, input_publisher  # noqa: E402
+from fake_scan import parse_plan, scan_at  # noqa: E402
+from lockstep_clock import Lockstep, input_publisher, run_program  # noqa: E402
 
 
 def main():
@@ -25,11 +25,7 @@ def main():
     parser.add_argument("--ticks", type=int, required=True)
     parser.add_argument("plan", nargs="+", help="PATTERN@SECONDS")
     args = parser.parse_args(rospy.myargv()[1:])
-    plan = []
-    for item in args.plan:
-        pattern, _, at = item.partition("@")
-        ranges(pattern)  # an unknown pattern fails here
-        plan.append((float(at), pattern))
+    plan = parse_plan(args.plan)  # an unknown pattern fails here
 
     rospy.init_node("lockstep_scans", disable_signals=True)
     clock = Lockstep("cmd_vel", args.period, out=args.out)
@@ -38,25 +34,13 @@ def main():
 
     def on_tick(tick):
         now = tick * args.period
-        current = [p for at, p in plan if at <= now + 1e-9]
-        scan = LaserScan()
         secs, nsecs = divmod(clock.clock_ns, 1_000_000_000)
-        scan.header.stamp = rospy.Time(secs, nsecs)
-        scan.header.frame_id = "camera_depth_frame"
-        scan.angle_min, scan.angle_max = -0.5, 0.5
-        scan.angle_increment = 1.0 / (N - 1)
-        scan.range_min, scan.range_max = 0.45, 8.0
-        scan.ranges = ranges(current[-1] if current else "clear")
+        # + 1e-9: a pattern planned at a tick's time is due at that tick despite rounding.
+        scan = scan_at(plan, now + 1e-9, rospy.Time(secs, nsecs))
         pub.publish(scan)
         return 0
 
-    try:
-        clock.connect()
-        clock.run(args.ticks, on_tick)
-    except LockstepError as error:
-        print(f"lockstep_scans: {error}", file=sys.stderr)
-        return 4
-    return 0
+    return run_program(clock, args.ticks, on_tick, "lockstep_scans")
 
 
 if __name__ == "__main__":

@@ -166,7 +166,7 @@ class AmclNode {
       const PoseEstimate e = filter_->estimate();
       start.initial_pose_x = e.mean.x;
       start.initial_pose_y = e.mean.y;
-      start.initial_pose_a = e.mean.yaw;
+      start.initial_pose_a = e.mean.theta;
     }
     filter_ = std::make_unique<ParticleFilter>(start, field_, seed_);
     if (!insideMap(map, start.initial_pose_x, start.initial_pose_y)) {
@@ -206,18 +206,18 @@ class AmclNode {
     const Pose2 pose(msg->pose.pose.position.x, msg->pose.pose.position.y,
                      tf2::getYaw(msg->pose.pose.orientation));
     const bool finite_pose = std::isfinite(pose.x) && std::isfinite(pose.y) &&
-                             std::isfinite(pose.yaw);
+                             std::isfinite(pose.theta);
     const bool usable_cov = std::isfinite(c[0]) && std::isfinite(c[7]) && std::isfinite(c[35]) &&
                             std::isfinite(c[1]) && c[0] >= 0 && c[7] >= 0 && c[35] >= 0;
     if (!finite_pose || !usable_cov) {
       ROS_WARN("amcl_lite: ignoring an initial pose that is not finite or whose covariance is "
                "negative or not finite: (%g, %g, %g), variances %g %g %g",
-               pose.x, pose.y, pose.yaw, c[0], c[7], c[35]);
+               pose.x, pose.y, pose.theta, c[0], c[7], c[35]);
       return;
     }
     filter_->initGaussian(pose, c[0], c[7], c[35], c[1]);
     force_update_ = true;
-    ROS_INFO("amcl_lite: initial pose (%.3f, %.3f, %.3f)", pose.x, pose.y, pose.yaw);
+    ROS_INFO("amcl_lite: initial pose (%.3f, %.3f, %.3f)", pose.x, pose.y, pose.theta);
   }
 
   bool onGlobalLocalization(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
@@ -252,7 +252,7 @@ class AmclNode {
     if (last_odom_) {
       const Pose2 step = last_odom_->inverse() * odom_base;
       update = update || std::hypot(step.x, step.y) >= p_.update_min_d ||
-               std::fabs(step.yaw) >= p_.update_min_a;
+               std::fabs(step.theta) >= p_.update_min_a;
     }
     if (update) {
       if (last_odom_) filter_->predict(*last_odom_, odom_base);
@@ -279,7 +279,7 @@ class AmclNode {
       t.child_frame_id = odom_frame_;
       t.transform.translation.x = map_odom_->x;
       t.transform.translation.y = map_odom_->y;
-      t.transform.rotation = yawQuaternion(map_odom_->yaw);
+      t.transform.rotation = yawQuaternion(map_odom_->theta);
       broadcaster_.sendTransform(t);
     }
   }
@@ -290,7 +290,7 @@ class AmclNode {
     msg.header.frame_id = global_frame_;
     msg.pose.pose.position.x = e.mean.x;
     msg.pose.pose.position.y = e.mean.y;
-    msg.pose.pose.orientation = yawQuaternion(e.mean.yaw);
+    msg.pose.pose.orientation = yawQuaternion(e.mean.theta);
     msg.pose.covariance[0] = e.covariance[0];
     msg.pose.covariance[1] = e.covariance[1];
     msg.pose.covariance[6] = e.covariance[3];
@@ -307,7 +307,7 @@ class AmclNode {
       geometry_msgs::Pose pose;
       pose.position.x = p.pose.x;
       pose.position.y = p.pose.y;
-      pose.orientation = yawQuaternion(p.pose.yaw);
+      pose.orientation = yawQuaternion(p.pose.theta);
       msg.poses.push_back(pose);
     }
     cloud_pub_.publish(msg);

@@ -31,7 +31,7 @@ struct BinHash {
 
 BinKey binOf(const Pose2& p) {
   return {static_cast<int>(std::floor(p.x / kBinSize)), static_cast<int>(std::floor(p.y / kBinSize)),
-          static_cast<int>(std::floor(wrapAngle(p.yaw) / kBinAngle))};
+          static_cast<int>(std::floor(normalizeAngle(p.theta) / kBinAngle))};
 }
 
 }  // namespace
@@ -59,7 +59,7 @@ void ParticleFilter::initGaussian(const Pose2& mean, double cov_xx, double cov_y
   for (auto& p : particles_) {
     const double u = unit(rng_), v = unit(rng_);
     p.pose = Pose2(mean.x + l11 * u, mean.y + l21 * u + l22 * v,
-                   wrapAngle(mean.yaw + la * unit(rng_)));
+                   normalizeAngle(mean.theta + la * unit(rng_)));
     p.weight = w;
   }
   updates_since_resample_ = 0;
@@ -130,7 +130,7 @@ void ParticleFilter::correct(const ScanObservation& scan) {
   double total = 0.0;
   for (auto& p : particles_) {
     const Pose2 laser = p.pose * scan.laser_in_base;
-    const double c = std::cos(laser.yaw), s = std::sin(laser.yaw);
+    const double c = std::cos(laser.theta), s = std::sin(laser.theta);
     // amcl's likelihood_field model: sum of cubed beam probabilities, added to 1 so one bad
     // beam cannot zero a particle (a heuristic amcl uses for robustness).
     double weight = 1.0;
@@ -285,8 +285,8 @@ PoseEstimate ParticleFilter::estimate() const {
     const Particle& p = particles_[i];
     mx += p.weight * p.pose.x;
     my += p.weight * p.pose.y;
-    mc += p.weight * std::cos(p.pose.yaw);
-    ms += p.weight * std::sin(p.pose.yaw);
+    mc += p.weight * std::cos(p.pose.theta);
+    ms += p.weight * std::sin(p.pose.theta);
   }
   mx /= best_weight;
   my /= best_weight;
@@ -294,7 +294,7 @@ PoseEstimate ParticleFilter::estimate() const {
   double cxx = 0.0, cxy = 0.0, cyy = 0.0, caa = 0.0;
   for (size_t i : *best) {
     const Particle& p = particles_[i];
-    const double ex = p.pose.x - mx, ey = p.pose.y - my, ea = wrapAngle(p.pose.yaw - out.mean.yaw);
+    const double ex = p.pose.x - mx, ey = p.pose.y - my, ea = normalizeAngle(p.pose.theta - out.mean.theta);
     cxx += p.weight * ex * ex;
     cxy += p.weight * ex * ey;
     cyy += p.weight * ey * ey;

@@ -54,7 +54,7 @@ inline amcl_lite::ScanObservation kinectScan(const amcl_lite::GridMap& m, const 
   const double fov = 58.0 * M_PI / 180.0;
   for (int i : amcl_lite::ParticleFilter::beamIndices(count, max_beams)) {
     const double a = -fov / 2 + fov * i / (count - 1);
-    scan.beams.push_back({castRay(m, pose.x, pose.y, pose.yaw + a, scan.range_max), a});
+    scan.beams.push_back({castRay(m, pose.x, pose.y, pose.theta + a, scan.range_max), a});
   }
   return scan;
 }

@@ -13,7 +13,7 @@ TEST(DiffMotion, WithoutNoiseTheParticleRepeatsTheOdometryStepInItsOwnFrame) {
   const Pose2 p = sampleDiffMotion(Pose2(0, 0, 0), old_odom, new_odom, none, rng);
   EXPECT_NEAR(p.x, 1.0, 1e-9);
   EXPECT_NEAR(p.y, 0.0, 1e-9);
-  EXPECT_NEAR(p.yaw, M_PI / 2, 1e-9);
+  EXPECT_NEAR(p.theta, M_PI / 2, 1e-9);
 }
 
 TEST(DiffMotion, ReversingIsNotAHalfTurnOfNoise) {
@@ -23,7 +23,7 @@ TEST(DiffMotion, ReversingIsNotAHalfTurnOfNoise) {
   const int n = 2000;
   for (int i = 0; i < n; ++i) {
     const Pose2 p = sampleDiffMotion(Pose2(0, 0, 0), Pose2(0, 0, 0), Pose2(-0.2, 0, 0), noise, rng);
-    spread += p.yaw * p.yaw;
+    spread += p.theta * p.theta;
   }
   // Heading noise from 0.2 m of travel: sigma = sqrt(2 * alpha2) * 0.2 ~ 0.13 rad, not ~pi.
   EXPECT_LT(std::sqrt(spread / n), 0.25);

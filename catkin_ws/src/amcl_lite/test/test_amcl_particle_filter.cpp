@@ -21,7 +21,7 @@ double positionError(const ParticleFilter& pf, const Pose2& truth) {
 // over-reads distance by 5% (drift) so the filter has something to correct.
 void drive(ParticleFilter* pf, const amcl_lite::GridMap& map, Pose2* truth, Pose2* odom,
            const Pose2& step, int steps) {
-  const Pose2 drifted(step.x * 1.05, step.y, step.yaw);
+  const Pose2 drifted(step.x * 1.05, step.y, step.theta);
   for (int i = 0; i < steps; ++i) {
     const Pose2 old_odom = *odom;
     *truth = *truth * step;
@@ -49,13 +49,13 @@ TEST(ParticleFilter, ConvergesFromAnOffsetInitialPoseWithTheNarrowKinectScan) {
   // An rviz-style initial pose 0.4 m and 0.2 rad off, with amcl's default spread.
   p.initial_pose_x = truth.x + 0.3;
   p.initial_pose_y = truth.y - 0.25;
-  p.initial_pose_a = truth.yaw + 0.2;
+  p.initial_pose_a = truth.theta + 0.2;
   ParticleFilter pf(p, field, 7);
   Pose2 odom(0, 0, 0);
   drive(&pf, map, &truth, &odom, Pose2(0, 0, 0.25), 6);   // look around
   drive(&pf, map, &truth, &odom, Pose2(0.2, 0, 0.0), 10);  // drive 2 m
   EXPECT_LT(positionError(pf, truth), 0.15);
-  EXPECT_LT(std::fabs(amcl_lite::wrapAngle(pf.estimate().mean.yaw - truth.yaw)), 0.1);
+  EXPECT_LT(std::fabs(amcl_lite::normalizeAngle(pf.estimate().mean.theta - truth.theta)), 0.1);
   // KLD sampling shrank the cloud from max_particles once it converged.
   EXPECT_LT(pf.particles().size(), static_cast<size_t>(p.max_particles));
   EXPECT_GE(pf.particles().size(), 100u);

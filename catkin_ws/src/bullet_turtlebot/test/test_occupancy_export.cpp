@@ -8,17 +8,12 @@
 
 #include "bullet_turtlebot/occupancy_export.hpp"
 #include "bullet_turtlebot/world_spec.hpp"
+#include "test_helpers.hpp"
 
 using namespace bullet_turtlebot;
 
 TEST(OccupancyExport, BoxRasterisedInMapServerFormat) {
-  WorldSpec spec;
-  BoxSpec box;
-  box.pose = Pose2D{1.0, 0.5, 0.0};
-  box.size_x = 1.0;
-  box.size_y = 0.5;
-  spec.boxes.push_back(box);
-  World world(spec);
+  World world(testing_helpers::box_world(Pose2D{1.0, 0.5, 0.0}, 1.0, 0.5));
   const MapImage map = rasterize_world(world, 0.1, 0.5);
   EXPECT_NEAR(map.origin.x, 0.0, 1e-6);
   EXPECT_NEAR(map.origin.y, -0.25, 1e-6);
@@ -48,11 +43,7 @@ TEST(OccupancyExport, BoxRasterisedInMapServerFormat) {
 }
 
 TEST(OccupancyExport, RefusesAMarginOrHeightItCannotDraw) {
-  WorldSpec spec;
-  BoxSpec box;
-  box.size_x = box.size_y = 1.0;
-  spec.boxes.push_back(box);
-  const World world(spec);
+  const World world(testing_helpers::box_world(Pose2D{}, 1.0, 1.0));
   EXPECT_THROW(rasterize_world(world, 0.1, std::nan("")), std::invalid_argument);
   EXPECT_THROW(rasterize_world(world, 0.1, -5.0), std::invalid_argument);
   EXPECT_THROW(rasterize_world(world, 0.1, 0.5, std::nan("")), std::invalid_argument);

@@ -102,14 +102,7 @@ TEST(Sweep, StopsAtWallAndBacksAway) {
 }
 
 TEST(Sweep, NoTunnellingThroughThinWall) {
-  WorldSpec spec;
-  BoxSpec wall;
-  wall.pose = Pose2D{1.0, 0.0, 0.0};
-  wall.size_x = 0.02;
-  wall.size_y = 4.0;
-  wall.size_z = 1.0;
-  spec.boxes.push_back(wall);
-  World world(spec);
+  World world(testing_helpers::box_world(Pose2D{1.0, 0.0, 0.0}, 0.02, 4.0));
   const SweepResult s = world.sweep_cylinder(Eigen::Vector2d(0, 0), Eigen::Vector2d(3.0, 0), 0.18, 0.4, 0.02);
   ASSERT_TRUE(s.hit);
   EXPECT_NEAR(s.fraction * 3.0, 0.99 - 0.18, 0.01);

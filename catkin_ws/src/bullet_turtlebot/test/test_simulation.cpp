@@ -86,11 +86,7 @@ TEST(Simulation, RejectsStartInsideObstacle) {
 }
 
 TEST(Simulation, FindsTheNearestFreePosition) {
-  WorldSpec spec;
-  BoxSpec box;
-  box.size_x = box.size_y = 2.0;  // x, y in [-1, 1]
-  spec.boxes.push_back(box);
-  const World world(spec);
+  const World world(testing_helpers::box_world(Pose2D{}, 2.0, 2.0));  // x, y in [-1, 1]
   Eigen::Vector2d found;
   ASSERT_TRUE(find_free_position(world, RobotGeometry{}, Eigen::Vector2d(0.5, 0.0), 5.0, &found));
   EXPECT_NEAR(found.y(), 0.0, 1e-9);

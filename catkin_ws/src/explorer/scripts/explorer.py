@@ -25,7 +25,7 @@ from explorer.follower import FollowerParams  # noqa: E402
 from explorer.map_message import MapFormatError, decode_occupancy_grid  # noqa: E402
 from explorer.map_planner import MapPlanner, PlannerParams  # noqa: E402
 from explorer.recovery import RecoveryParams  # noqa: E402
-from explorer.scan_safety import clearance_ahead  # noqa: E402
+from explorer.scan_safety import scan_clearance  # noqa: E402
 from geometry_msgs.msg import PoseStamped, Twist  # noqa: E402
 from nav_msgs.msg import Path  # noqa: E402
 from rosbook_env.geometry import yaw_of, yaw_to_quaternion  # noqa: E402
@@ -134,15 +134,7 @@ class ExplorerNode:
         offset = self.sensor_offset(msg.header.frame_id)
         if offset is None:
             return
-        clear = clearance_ahead(
-            msg.ranges,
-            msg.angle_min,
-            msg.angle_increment,
-            msg.range_min,
-            msg.range_max,
-            self.scan_half_width,
-            offset,
-        )
+        clear = scan_clearance(msg, self.scan_half_width, offset)
         with self.lock:
             self.clearance = (msg.header.stamp.to_sec(), clear)
 

@@ -2,7 +2,8 @@ import math
 
 import numpy as np
 import pytest
-from explorer.scan_safety import clearance_ahead
+from explorer.scan_safety import clearance_ahead, scan_clearance
+from sensor_msgs.msg import LaserScan
 
 FOV = math.radians(58)
 
@@ -55,3 +56,11 @@ def test_a_wide_scanner_ignores_what_is_behind():
     assert clearance_ahead(ranges, -math.pi, increment, 0.45, 30.0, 0.22) == math.inf
     ranges[count // 2] = -math.inf  # straight ahead
     assert clearance_ahead(ranges, -math.pi, increment, 0.45, 30.0, 0.22) == 0.0
+
+
+def test_a_laser_scan_message_gives_the_same_clearance():
+    ranges, angle_min, increment = scan({320: 2.0, 100: 1.0})
+    msg = LaserScan(angle_min=angle_min, angle_increment=increment, range_min=0.45)
+    msg.range_max, msg.ranges = 8.0, list(ranges)
+    expected = clear(ranges, angle_min, increment, offset=-0.087)
+    assert scan_clearance(msg, 0.22, -0.087) == expected == pytest.approx(2.0 - 0.087)

@@ -21,7 +21,7 @@ import tf2_ros  # noqa: E402
 from explorer.follower import FollowerParams  # noqa: E402
 from explorer.grid import GridGeometry  # noqa: E402
 from explorer.recovery import RecoveryParams  # noqa: E402
-from explorer.scan_safety import clearance_ahead  # noqa: E402
+from explorer.scan_safety import scan_clearance  # noqa: E402
 from geometry_msgs.msg import PoseStamped, Twist  # noqa: E402
 from move_base_lite.global_planner import CostmapParams, GlobalPlanner  # noqa: E402
 from move_base_lite.navigator import ACTIVE, SUCCEEDED, Navigator, NavigatorParams  # noqa: E402
@@ -131,15 +131,7 @@ class MoveBase:
             yaw_of(t.transform.rotation),
         )
         offset = self.sensor_offset(frame)
-        clear = clearance_ahead(
-            msg.ranges,
-            msg.angle_min,
-            msg.angle_increment,
-            msg.range_min,
-            msg.range_max,
-            self.costmap_params.robot_radius,
-            offset or 0.0,
-        )
+        clear = scan_clearance(msg, self.costmap_params.robot_radius, offset or 0.0)
         hits, free_ends, origin = scan_endpoints(
             msg.ranges, msg.angle_min, msg.angle_increment, msg.range_min, msg.range_max, sensor
         )

@@ -48,6 +48,21 @@ geometry_msgs::TransformStamped transform(const ros::Time& stamp, const std::str
   return t;
 }
 
+// The base's planar pose in `frame` and its body-frame velocity; covariances left to the caller.
+nav_msgs::Odometry odometry_message(const ros::Time& stamp, const std::string& frame, const Pose2D& pose,
+                                    double linear_velocity, double angular_velocity) {
+  nav_msgs::Odometry msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = frame;
+  msg.child_frame_id = "base_footprint";
+  msg.pose.pose.position.x = pose.x;
+  msg.pose.pose.position.y = pose.y;
+  msg.pose.pose.orientation = yaw_quaternion(pose.yaw);
+  msg.twist.twist.linear.x = linear_velocity;
+  msg.twist.twist.angular.z = angular_velocity;
+  return msg;
+}
+
 sensor_msgs::CameraInfo camera_info(const CameraConfig& camera, const std::string& frame, const ros::Time& stamp) {
   sensor_msgs::CameraInfo info;
   info.header.stamp = stamp;
@@ -61,6 +76,21 @@ sensor_msgs::CameraInfo camera_info(const CameraConfig& camera, const std::strin
   info.R = {1, 0, 0, 0, 1, 0, 0, 0, 1};
   info.P = {f, 0, camera.cx(), 0, 0, f, camera.cy(), 0, 0, 0, 1, 0};
   return info;
+}
+
+// An Image of the camera's size with everything but the pixels (little-endian rows of
+// `bytes_per_pixel` each).
+sensor_msgs::Image image_header(const CameraConfig& camera, const std::string& frame, const ros::Time& stamp,
+                                const std::string& encoding, uint32_t bytes_per_pixel) {
+  sensor_msgs::Image image;
+  image.header.stamp = stamp;
+  image.header.frame_id = frame;
+  image.width = static_cast<uint32_t>(camera.width);
+  image.height = static_cast<uint32_t>(camera.height);
+  image.encoding = encoding;
+  image.is_bigendian = 0;
+  image.step = image.width * bytes_per_pixel;
+  return image;
 }
 
 template <typename T>
@@ -254,15 +284,8 @@ void RosSimulator::publish_clock() {
 void RosSimulator::publish_odometry() {
   const ros::Time now = stamp();
   const OdometryModel& odom = sim_.odometry();
-  nav_msgs::Odometry msg;
-  msg.header.stamp = now;
-  msg.header.frame_id = "odom";
-  msg.child_frame_id = "base_footprint";
-  msg.pose.pose.position.x = odom.pose().x;
-  msg.pose.pose.position.y = odom.pose().y;
-  msg.pose.pose.orientation = yaw_quaternion(odom.pose().yaw);
-  msg.twist.twist.linear.x = odom.linear_velocity();
-  msg.twist.twist.angular.z = odom.angular_velocity();
+  nav_msgs::Odometry msg =
+      odometry_message(now, "odom", odom.pose(), odom.linear_velocity(), odom.angular_velocity());
   // Variances that grow with the distance and angle travelled, as the drift model does.
   const OdometryNoise& n = odom.noise();
   const double var_xy = n.enabled ? 1e-4 + n.linear * n.linear * odom.travelled() : 1e-6;
@@ -288,16 +311,8 @@ void RosSimulator::publish_odometry() {
                                     msg.pose.pose.orientation));
   tf_pub_.publish(tf);
 
-  nav_msgs::Odometry truth;
-  truth.header.stamp = now;
-  truth.header.frame_id = "world";
-  truth.child_frame_id = "base_footprint";
-  truth.pose.pose.position.x = sim_.pose().x;
-  truth.pose.pose.position.y = sim_.pose().y;
-  truth.pose.pose.orientation = yaw_quaternion(sim_.pose().yaw);
-  truth.twist.twist.linear.x = sim_.linear_velocity();
-  truth.twist.twist.angular.z = sim_.angular_velocity();
-  truth_pub_.publish(truth);
+  truth_pub_.publish(
+      odometry_message(now, "world", sim_.pose(), sim_.linear_velocity(), sim_.angular_velocity()));
 }
 
 void RosSimulator::publish_static_tf() {
@@ -346,14 +361,7 @@ void RosSimulator::publish_cameras() {
     std::vector<float> depth;
     render_depth(sim_.world(), camera_, sim_.depth_sensor_pose(), &depth);
     if (want_depth) {
-      sensor_msgs::Image image;
-      image.header.stamp = now;
-      image.header.frame_id = "camera_depth_optical_frame";
-      image.width = static_cast<uint32_t>(camera_.width);
-      image.height = static_cast<uint32_t>(camera_.height);
-      image.encoding = "32FC1";
-      image.is_bigendian = 0;
-      image.step = image.width * 4;
+      sensor_msgs::Image image = image_header(camera_, "camera_depth_optical_frame", now, "32FC1", 4);
       image.data.resize(depth.size() * 4);
       std::memcpy(image.data.data(), depth.data(), image.data.size());
       depth_pub_.publish(image);
@@ -392,13 +400,7 @@ void RosSimulator::publish_cameras() {
     }
   }
   if (rgb_pub_.getNumSubscribers() > 0) {
-    sensor_msgs::Image image;
-    image.header.stamp = now;
-    image.header.frame_id = "camera_rgb_optical_frame";
-    image.width = static_cast<uint32_t>(camera_.width);
-    image.height = static_cast<uint32_t>(camera_.height);
-    image.encoding = "rgb8";
-    image.step = image.width * 3;
+    sensor_msgs::Image image = image_header(camera_, "camera_rgb_optical_frame", now, "rgb8", 3);
     render_rgb(sim_.world(), camera_, sim_.rgb_sensor_pose(), &image.data);
     rgb_pub_.publish(image);
   }

@@ -37,3 +37,16 @@ def clearance_ahead(
     if not inside.any():
         return math.inf
     return float(x[inside].min())
+
+
+def scan_clearance(scan, half_width, sensor_offset=0.0):
+    """clearance_ahead of a sensor_msgs/LaserScan's own angles and limits."""
+    return clearance_ahead(
+        scan.ranges,
+        scan.angle_min,
+        scan.angle_increment,
+        scan.range_min,
+        scan.range_max,
+        half_width,
+        sensor_offset,
+    )
