@@ -5,7 +5,6 @@ import os
 import shutil
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
@@ -37,15 +36,17 @@ def run_exploration(ros, tmp_path, world="office", use_slam=True):
     ):
         pytest.skip("bullet_turtlebot is not in this workspace")
     out = start_exploration(ros, tmp_path, world, SPEED, use_slam, tmp_path / "map.pgm")
-    deadline = time.monotonic() + SIM_SECONDS / SPEED * 6 + 120
-    while time.monotonic() < deadline:
+
+    def finished():
         got = records(out)
-        if got and (got[-1]["sim"] - got[0]["sim"] >= SIM_SECONDS or got[-1]["done"]):
-            return got
         for proc in ros.procs:
             assert proc.poll() is None, f"{proc.label} died:\n" + ros.output(proc)[-3000:]
-        time.sleep(1.0)
-    raise AssertionError(f"{SIM_SECONDS} s of sim time did not pass: {records(out)[-1:]}")
+        return got and (got[-1]["sim"] - got[0]["sim"] >= SIM_SECONDS or got[-1]["done"])
+
+    ros.wait_for(
+        finished, SIM_SECONDS / SPEED * 6 + 120, f"{SIM_SECONDS:g} s of sim time", interval=1.0
+    )
+    return records(out)
 
 
 def report(got, label):
