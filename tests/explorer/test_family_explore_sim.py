@@ -1,7 +1,11 @@
-"""End to end on a procedural family world: the explorer, the simulator and SLAM (or the
-stand-in mapper where gmapping_lite is not built) on ring seed 5, a 47 m loop corridor
-whose corners cast the grazing shadows that used to make the explorer give frontiers up.
-It keeps exploring: `explorer/done` never turns true while much of the loop is unmapped."""
+"""End to end on a procedural family world: the explorer and the simulator, with the
+stand-in mapper on perfect odometry, on ring seed 5, a 47 m loop corridor whose corners
+cast the grazing shadows that used to make the explorer give frontiers up. It keeps
+exploring: `explorer/done` never turns true while much of the loop is unmapped.
+
+The mapper is the stand-in, not SLAM, because coverage is scored with the map placed at
+the start pose: SLAM's drift on a ring (issue 16) cost up to 16 points of it, so an explorer
+that was right to stop failed the test. test_explore_sim covers the explorer with SLAM."""
 
 import subprocess
 import sys
@@ -11,7 +15,7 @@ import pytest
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
-from explore_launch import slam_node_available, start_exploration  # noqa: E402
+from explore_launch import start_exploration  # noqa: E402
 from roskit import read_jsonl  # noqa: E402
 
 FAMILY, SEED = "ring", 5
@@ -27,7 +31,7 @@ def test_explorer_keeps_exploring_a_ring_world(ros, tmp_path):
     make = ["rosrun", "bullet_turtlebot", "make_worlds.py", "--family", FAMILY]
     ros.run([*make, "--seed", str(SEED), str(tmp_path)], timeout=60)
     world = tmp_path / f"{FAMILY}_{SEED}.yaml"
-    out = start_exploration(ros, tmp_path, world, SPEED, slam_node_available())
+    out = start_exploration(ros, tmp_path, world, SPEED, use_slam=False)
 
     def finished():
         got = read_jsonl(out)
@@ -45,8 +49,7 @@ def test_explorer_keeps_exploring_a_ring_world(ros, tmp_path):
         f"done {got[-1]['done']}"
     )
     for record in got:
-        # Done only once nearly all the loop is mapped (SLAM's map is placed at the start
-        # pose here, so its drift costs a few points).
+        # Done only once nearly all the loop is mapped.
         assert not record["done"] or record["coverage"] >= 0.85, record
     assert got[-1]["coverage"] >= 0.70
     elapsed = got[-1]["sim"] - t0
