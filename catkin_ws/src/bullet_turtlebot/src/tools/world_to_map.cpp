@@ -29,18 +29,15 @@ int main(int argc, char** argv) {
   double resolution = 0.05, margin = 0.5, min_height = 0.0;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    auto value = [&](const char* what) -> const char* {
-      if (i + 1 >= argc) return nullptr;
-      (void)what;
-      return argv[++i];
-    };
+    // The option's argument, or nullptr when the option ends the command line.
+    auto value = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
     if (arg == "-h" || arg == "--help") return usage("help"), 0;
     if (arg == "-f") {
-      const char* v = value("-f");
+      const char* v = value();
       if (!v || !*v) return usage("-f needs a base name (it writes NAME.pgm and NAME.yaml)");
       out = v;
     } else if (arg == "--resolution" || arg == "--margin" || arg == "--min-height") {
-      const char* v = value(arg.c_str());
+      const char* v = value();
       char* end = nullptr;
       const double number = v ? std::strtod(v, &end) : 0.0;
       if (!v || *end != '\0') return usage((arg + " needs a number").c_str());

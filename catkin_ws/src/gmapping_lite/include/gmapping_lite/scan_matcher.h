@@ -120,8 +120,8 @@ class ScanMatcher {
                const OdometryPrior& prior = {});
 
  private:
-  // Sum over points of the log-likelihood with kernel sigma (inv = 1 / 2 sigma^2), one term
-  // per point whatever the beams it stands for.
+  // Sum over points of the log-likelihood with kernel sigma (inv = 1 / 2 sigma^2), each point's
+  // term counted once per beam it stands for (as in the weights and the normal equations).
   double pointLogLikelihood(const Pose2& pose, const ScanPoints& scan, double inv) const;
   // Gauss-Newton (point-to-line on walls) against the field: finds the peak along diagonal
   // ridges that axis-aligned climbing stalls on. `centre` and `prior` keep directions the scan
