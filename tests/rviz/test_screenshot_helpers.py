@@ -66,3 +66,39 @@ def test_masks_counts_centroid_extent():
 def test_missing_config_is_a_clear_error(tmp_path):
     with pytest.raises(FileNotFoundError, match="rviz config not found"):
         rs.RvizSession(tmp_path / "nope.rviz")
+
+
+class _FlakyGrabs(rs.RvizSession):
+    """A session whose screen grabs follow a script (no X server): an exception to raise or
+    a picture to return, one per grab."""
+
+    def __init__(self, grabs):  # nothing of the real session is started
+        self.grabs = list(grabs)
+
+    def shot(self, out=None):
+        grab = self.grabs.pop(0)
+        if isinstance(grab, Exception):
+            raise grab
+        return Path("shot.png"), grab
+
+
+def test_settle_grabs_again_after_a_failed_grab():
+    picture = np.full((4, 4, 3), 200, dtype=np.uint8)
+    failed = rs.ScreenGrabError("import failed: XIO: fatal IO error 11")
+    session = _FlakyGrabs([failed, failed, picture])
+    path, img = session.settle(lambda img: img.mean() > 100, timeout=30, interval=0, min_wait=0)
+    assert img is picture and session.grabs == []
+
+
+def test_settle_gives_up_on_grabs_at_the_deadline_naming_the_error():
+    failed = rs.ScreenGrabError("import failed: XIO: fatal IO error 11")
+    session = _FlakyGrabs([failed] * 3)
+    with pytest.raises(rs.ScreenGrabError, match="fatal IO error 11"):
+        session.settle(lambda img: True, timeout=-1, interval=0, min_wait=0)
+    assert len(session.grabs) == 2  # no grab after the deadline had passed
+
+
+def test_settle_stops_at_once_when_rviz_is_gone():
+    session = _FlakyGrabs([rs.RvizError("rviz is not running"), np.zeros((2, 2, 3))])
+    with pytest.raises(rs.RvizError, match="not running"):
+        session.settle(lambda img: True, timeout=30, interval=0, min_wait=0)

@@ -36,6 +36,11 @@ class RvizError(RuntimeError):
     pass
 
 
+class ScreenGrabError(RvizError):
+    """One screen grab failed while rviz ran (an X error such as "fatal IO error 11" when a
+    loaded machine leaves Xvfb slow to answer): the next grab may well succeed."""
+
+
 class RvizSession:
     """One rviz inside its own Xvfb; screenshots on demand; everything killed on close."""
 
@@ -180,7 +185,8 @@ class RvizSession:
             timeout=60,
         )
         if done.returncode != 0:
-            raise RvizError(f"import failed: {done.stderr.strip()}")
+            tmp.unlink(missing_ok=True)
+            raise ScreenGrabError(f"import failed: {done.stderr.strip()}")
         os.replace(tmp, out)  # a reader never sees half a PNG
         self._view = None  # the layout may still be settling: look it up again
         return out, load(out)
@@ -208,7 +214,14 @@ class RvizSession:
         time.sleep(min_wait)
         deadline = time.monotonic() + timeout
         while True:
-            path, img = self.shot(out)
+            try:
+                path, img = self.shot(out)
+            except ScreenGrabError:
+                # A failed grab is no picture, not a verdict: grab again until the deadline.
+                if time.monotonic() > deadline:
+                    raise
+                time.sleep(interval)
+                continue
             try:
                 if predicate(img):
                     return path, img
