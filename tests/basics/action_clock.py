@@ -51,12 +51,14 @@ class ActionClock:
         self.seen = {"feedback": [], "cancel": [], "result": [], "active": []}
         self.out = open(args.out, "w")
         self.pub = rospy.Publisher("/clock", Clock, queue_size=10)
-        for topic, kind, msg_class in (
-            ("/timer/feedback", "feedback", TimerActionFeedback),
-            ("/timer/cancel", "cancel", GoalID),
-            ("/timer/result", "result", TimerActionResult),
-        ):
-            rospy.Subscriber(topic, msg_class, self.record, (topic, kind), queue_size=100)
+        self.subscribers = {
+            kind: rospy.Subscriber(topic, msg_class, self.record, (topic, kind), queue_size=100)
+            for topic, kind, msg_class in (
+                ("/timer/feedback", "feedback", TimerActionFeedback),
+                ("/timer/cancel", "cancel", GoalID),
+                ("/timer/result", "result", TimerActionResult),
+            )
+        }
         rospy.Subscriber("/timer/status", GoalStatusArray, self.on_status, queue_size=100)
 
     def record(self, msg, topic_kind):
@@ -84,6 +86,9 @@ class ActionClock:
     def publish(self):
         secs, nsecs = divmod(self.clock_ns, NS)
         self.pub.publish(Clock(clock=rospy.Time(secs, nsecs)))
+
+    def hears_results(self):
+        return self.subscribers["result"].get_num_connections() > 0
 
     def result_seen(self):
         return self.count("result") > 0
@@ -138,8 +143,12 @@ class ActionClock:
                 time.sleep(REPEAT)
         start_ns = self.clock_ns
         started = "active" if args.simple else "feedback"
+        # Before the goal can end, this clock must hear the server's result: its connection
+        # to /timer/result is made apart from the status and feedback ones and can come
+        # later on a loaded machine; a result sent before it would be missed.
         self.hold_until(
-            lambda: self.handled(started, 1) or self.count("result"), "the server to start a goal"
+            lambda: self.result_seen() or (self.handled(started, 1) and self.hears_results()),
+            "the server to start a goal",
         )
         wait = args.goal
         events = []  # (seconds after the goal, what is due, how many by then)

@@ -1,6 +1,7 @@
 """The screenshot helper's pure parts (no X server, no ROS): finding rviz's render
 windows in xwininfo's tree, and the colour measurements the view tests rely on."""
 
+import signal
 import sys
 from pathlib import Path
 
@@ -102,3 +103,37 @@ def test_settle_stops_at_once_when_rviz_is_gone():
     session = _FlakyGrabs([rs.RvizError("rviz is not running"), np.zeros((2, 2, 3))])
     with pytest.raises(rs.RvizError, match="not running"):
         session.settle(lambda img: True, timeout=30, interval=0, min_wait=0)
+
+
+def test_crash_signal_reads_roslaunch_and_xvfb_run():
+    died = "process has died [pid 14230, exit code -11, cmd /usr/lib/rviz/rviz -d x.rviz]"
+    assert rs.crash_signal(0, died) == signal.SIGSEGV
+    assert rs.crash_signal(128 + signal.SIGABRT, "") == signal.SIGABRT
+    assert rs.crash_signal(1, "process has died [pid 3, exit code -15, cmd rviz]") is None
+    assert rs.crash_signal(0, "") is None and rs.crash_signal(None, "") is None
+
+
+class _CrashingSession(_FlakyGrabs):
+    """Grabs follow a script; start and close only count."""
+
+    def __init__(self, grabs):
+        super().__init__(grabs)
+        self.starts = 0
+
+    def start(self, attempts=3):
+        self.starts += 1
+
+    def close(self):
+        pass
+
+
+def test_settle_starts_rviz_again_once_after_a_crash_at_start_up():
+    picture = np.full((4, 4, 3), 200, dtype=np.uint8)
+    crashed = rs.RvizCrashed("rviz is not running (SIGSEGV)")
+    session = _CrashingSession([crashed, picture])
+    path, img = session.settle(lambda img: True, timeout=30, interval=0, min_wait=0)
+    assert img is picture and session.starts == 1
+    session = _CrashingSession([crashed, crashed, picture])  # a second crash is a failure
+    with pytest.raises(rs.RvizCrashed):
+        session.settle(lambda img: True, timeout=30, interval=0, min_wait=0)
+    assert session.starts == 1

@@ -36,13 +36,39 @@ class RvizError(RuntimeError):
     pass
 
 
+class RvizCrashed(RvizError):
+    """rviz died from a signal (a segfault inside Debian's rviz or Ogre, seen once in CI as
+    rviz started under load): a crash of the viewer, not a verdict on what it shows."""
+
+
+# Signals that mean a crash, not a stop: roslaunch logs "exit code -11", xvfb-run exits
+# 128 + the signal of the command it ran.
+CRASH_SIGNALS = (signal.SIGSEGV, signal.SIGABRT, signal.SIGBUS, signal.SIGILL, signal.SIGFPE)
+_DIED = re.compile(r"process has died \[pid \d+, exit code -(\d+)")
+
+
+def crash_signal(returncode, log):
+    """The crash signal rviz died from, read from xvfb-run's exit code and the session's
+    log (roslaunch's "process has died" line); None when it stopped otherwise."""
+    codes = [int(code) for code in _DIED.findall(log)]
+    if returncode is not None and returncode > 128:
+        codes.append(returncode - 128)
+    return next((signal.Signals(c) for c in codes if c in CRASH_SIGNALS), None)
+
+
 class ScreenGrabError(RvizError):
     """One screen grab failed while rviz ran (an X error such as "fatal IO error 11" when a
     loaded machine leaves Xvfb slow to answer): the next grab may well succeed."""
 
 
 class RvizSession:
-    """One rviz inside its own Xvfb; screenshots on demand; everything killed on close."""
+    """One rviz inside its own Xvfb; screenshots on demand; everything killed on close.
+
+    An rviz that crashes before its first screenshot is started again, once (RvizCrashed).
+    """
+
+    crash_restarts = 1  # how many crashes at start-up to start again after
+    pictures = 0  # screenshots taken so far
 
     def __init__(self, config=None, env=None, workdir=None, screen=SCREEN, command=None):
         """rviz -d `config`, or any `command` that opens rviz (e.g. a roslaunch)."""
@@ -171,7 +197,11 @@ class RvizSession:
     def shot(self, out=None):
         """Screenshot of the whole X screen; returns (path, RGB array)."""
         if self.proc is None or self.proc.poll() is not None:
-            raise RvizError("rviz is not running:\n" + self.log())
+            returncode = None if self.proc is None else self.proc.returncode
+            crash = crash_signal(returncode, self.log())
+            error = RvizCrashed if crash else RvizError
+            how = crash.name if crash else "stopped"
+            raise error(f"rviz is not running ({how}):\n" + self.log())
         self._shots += 1
         out = Path(out or self.workdir / f"shot-{self._shots:03d}.png")
         tmp = out.with_name(out.name + ".part.png")
@@ -188,6 +218,7 @@ class RvizSession:
             tmp.unlink(missing_ok=True)
             raise ScreenGrabError(f"import failed: {done.stderr.strip()}")
         os.replace(tmp, out)  # a reader never sees half a PNG
+        self.pictures += 1
         self._view = None  # the layout may still be settling: look it up again
         return out, load(out)
 
@@ -221,6 +252,16 @@ class RvizSession:
                 if time.monotonic() > deadline:
                     raise
                 time.sleep(interval)
+                continue
+            except RvizCrashed as crash:
+                if self.pictures or self.crash_restarts <= 0:
+                    raise
+                self.crash_restarts -= 1
+                print(f"rviz_screenshot: rviz crashed at start-up, starting it again: {crash}")
+                self.close()
+                self.start()
+                time.sleep(min_wait)
+                deadline = time.monotonic() + timeout
                 continue
             try:
                 if predicate(img):

@@ -72,6 +72,20 @@ def test_score_navigation_measures_in_the_world():
     assert figures["localization_max_m"] == pytest.approx(0.05)
 
 
+def test_goal_times_off_the_truths_clock_are_an_error():
+    # Wall-clock goal times against a sim-time bag (a client that missed /use_sim_time)
+    # would otherwise all be scored at the bag's last pose.
+    t = np.linspace(0.0, 10.0, 101)
+    truth = Trajectory(t, [(0.1 * s, 0.0, 0.0) for s in t])
+    goal = {"goal": (1.0, 0.0, 0.0), "state": "SUCCEEDED", "path_m": 1.0}
+    late = dict(goal, sent=1.79e9, ended=1.79e9 + 4.6)
+    with pytest.raises(ValueError, match="another clock"):
+        score_navigation(truth, truth, [late], (0.0, 0.0, 0.0), top_speed=0.5)
+    just_after = dict(goal, sent=2.0, ended=10.5)  # within the slack: the last pose
+    figures = score_navigation(truth, truth, [just_after], (0.0, 0.0, 0.0), top_speed=0.5)
+    assert figures["per_goal"][0]["position_error_m"] == pytest.approx(0.0)
+
+
 def test_leg_lengths_from_the_start_through_each_goal():
     grid = grid_of_saved_map(*saved_room())
     lengths = leg_lengths(grid, [(0.5, 0.0, 0.0), (0.5, 1.0, 0.0), (1.5, 0.0, 0.0)])

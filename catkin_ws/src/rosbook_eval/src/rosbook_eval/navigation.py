@@ -19,6 +19,9 @@ from scipy import ndimage
 from rosbook_eval.poses import compose, position_errors, rms, wrap
 
 SQRT2 = math.sqrt(2.0)
+# s: how far a goal's end may lie outside the recorded ground truth and still be scored at
+# the nearest pose (the recorder starts and stops a message or two apart from the goals).
+CLOCK_SLACK = 1.0
 
 
 def grid_of_saved_map(cells, resolution, origin, start=(0.0, 0.0, 0.0)):
@@ -143,8 +146,14 @@ def score_navigation(truth, estimate, goals, map_frame, top_speed):
     position and heading error where it ended, in the world.
     """
     per_goal = []
-    for g in goals:
+    for n, g in enumerate(goals, 1):
         gx, gy, gyaw = compose(map_frame, tuple(g["goal"]))
+        if not truth.t[0] - CLOCK_SLACK <= g["ended"] <= truth.t[-1] + CLOCK_SLACK:
+            raise ValueError(
+                f"goal {n} ended at {g['ended']:.1f} s, outside the ground truth's "
+                f"{truth.t[0]:.1f}-{truth.t[-1]:.1f} s: were its times read off another clock "
+                "(wall time instead of the simulator's)?"
+            )
         ended = min(max(g["ended"], truth.t[0]), truth.t[-1])
         tx, ty, tyaw = truth.at(ended)
         ideal = g["path_m"] / top_speed
