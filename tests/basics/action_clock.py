@@ -20,7 +20,8 @@ A --simple server may read its start time only after the jump to the goal's end 
 status goes out just before): without a result there, the clock jumps one goal length on.
 
 Writes JSON lines {"topic", "clock", ...} to --out for feedback and result (with their
-"elapsed", "remaining", "updates", "status") and cancel.
+"elapsed", "remaining", "updates", "status"), cancel and goal; creates --out + ".ready" once
+it hears the server's feedback, status and result.
 """
 
 import argparse
@@ -33,7 +34,7 @@ import time
 
 import rospy
 from actionlib_msgs.msg import GoalID, GoalStatus, GoalStatusArray
-from basics.msg import TimerActionFeedback, TimerActionResult
+from basics.msg import TimerActionFeedback, TimerActionGoal, TimerActionResult
 from basics.timer import FEEDBACK_PERIOD, TICK_LAG
 from rosgraph_msgs.msg import Clock
 
@@ -51,15 +52,21 @@ class ActionClock:
         self.seen = {"feedback": [], "cancel": [], "result": [], "active": []}
         self.out = open(args.out, "w")
         self.pub = rospy.Publisher("/clock", Clock, queue_size=10)
+        self.seen["goal"] = []
         self.subscribers = {
             kind: rospy.Subscriber(topic, msg_class, self.record, (topic, kind), queue_size=100)
             for topic, kind, msg_class in (
                 ("/timer/feedback", "feedback", TimerActionFeedback),
                 ("/timer/cancel", "cancel", GoalID),
                 ("/timer/result", "result", TimerActionResult),
+                ("/timer/goal", "goal", TimerActionGoal),
             )
         }
-        rospy.Subscriber("/timer/status", GoalStatusArray, self.on_status, queue_size=100)
+        self.subscribers["status"] = rospy.Subscriber(
+            "/timer/status", GoalStatusArray, self.on_status, queue_size=100
+        )
+        self.ready_file = args.out + ".ready"
+        self.ready = False
 
     def record(self, msg, topic_kind):
         topic, kind = topic_kind
@@ -86,6 +93,19 @@ class ActionClock:
     def publish(self):
         secs, nsecs = divmod(self.clock_ns, NS)
         self.pub.publish(Clock(clock=rospy.Time(secs, nsecs)))
+        self.mark_ready()
+
+    def mark_ready(self):
+        """Create --out + ".ready" once this clock hears everything a server sends (feedback,
+        status, result): a test waits for it before it sends a goal, so that no one-off
+        message (an abort's only result) goes out before the connection that carries it."""
+        if self.ready:
+            return
+        kinds = ("feedback", "status", "result")
+        if all(self.subscribers[k].get_num_connections() > 0 for k in kinds):
+            with open(self.ready_file, "w"):
+                pass
+            self.ready = True
 
     def hears_results(self):
         return self.subscribers["result"].get_num_connections() > 0
@@ -143,11 +163,19 @@ class ActionClock:
                 time.sleep(REPEAT)
         start_ns = self.clock_ns
         started = "active" if args.simple else "feedback"
+
         # Before the goal can end, this clock must hear the server's result: its connection
         # to /timer/result is made apart from the status and feedback ones and can come
         # later on a loaded machine; a result sent before it would be missed.
+        # A --simple server's ACTIVE status is sent once, on its own connection, and the held
+        # clock stops actionlib's periodic status: the client's goal (its publisher was up long
+        # before) also counts as the start; the schedule below allows for a server that reads
+        # its start time after the jump.
+        def goal_started():
+            return self.handled(started, 1) or (args.simple and self.count("goal") > 0)
+
         self.hold_until(
-            lambda: self.result_seen() or (self.handled(started, 1) and self.hears_results()),
+            lambda: self.result_seen() or (goal_started() and self.hears_results()),
             "the server to start a goal",
         )
         wait = args.goal

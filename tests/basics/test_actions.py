@@ -24,11 +24,14 @@ RESULT = re.compile(
 )
 
 
-def timer_on_sim_time(ros, master, server="fancy_action_server.py", *clock_options):
+def timer_on_sim_time(
+    ros, master, server="fancy_action_server.py", *clock_options, server_running=False
+):
     """use_sim_time, the action's lock-step /clock (action_clock.py: it holds still until a
     goal has started, then jumps from feedback to feedback and waits for each, at the server
     and printed by fancy_client's client), then the server, which takes goals once it has the
-    clock."""
+    clock. With a server (started here, or `server_running`), returns once the clock hears
+    it, so that a result sent at once (an abort) cannot go out before the clock listens."""
     ros.run(["rosparam", "set", "/use_sim_time", "true"])
     out = ros.workdir / f"action-clock-{ros._log_index + 1:02d}.jsonl"
     client_out = out.with_suffix(".client-stdout")
@@ -39,7 +42,22 @@ def timer_on_sim_time(ros, master, server="fancy_action_server.py", *clock_optio
     if server:
         ros.start(["rosrun", "basics", server])
         master.wait_for_topic("timer/result")
+    if server or server_running:
+        ready = Path(f"{out}.ready")
+        ros.wait_for(ready.exists, timeout=90, what="the action clock to hear the server")
     return clock
+
+
+def wait_for_client(ros, client, clock, timeout=180):
+    """Until the client exits; fails at once, with the clock's own message, if the clock gave
+    up first (it waits 60 s for what is due)."""
+    ros.wait_for(
+        lambda: client.poll() is not None or clock.poll() not in (None, 0),
+        timeout=timeout,
+        what="the action client",
+    )
+    assert clock.poll() in (None, 0), ros.output(clock)
+    return client.returncode
 
 
 def fancy_client(ros, clock, *args):
@@ -49,9 +67,10 @@ def fancy_client(ros, clock, *args):
     yet (actionlib's client drops that), however long a loaded machine stalls the client."""
     cmd = shlex.join(["rosrun", "basics", "fancy_action_client.py", *args])
     client = ros.start(f"exec {cmd} > {shlex.quote(str(clock.client_out))}", name="client")
-    assert client.wait(timeout=120) == 0, ros.output(client) + clock.client_out.read_text()
+    code = wait_for_client(ros, client, clock)
+    assert code == 0, ros.output(client) + clock.client_out.read_text()
     out = clock.client_out.read_text()
-    assert clock.wait(timeout=60) == 0, ros.output(clock)
+    assert clock.wait(timeout=120) == 0, ros.output(clock)
     feedback = [(float(e), float(r)) for e, r in FEEDBACK.findall(out)]
     (state, status, elapsed, updates), *_ = RESULT.findall(out)
     return feedback, (int(state), status, float(elapsed), int(updates))
@@ -113,7 +132,7 @@ def test_too_long_and_negative_goals_abort_at_once(ros, master):
     assert (state, status, updates, feedback) == (4, "Timer aborted due to too-long wait", 0, [])
     assert elapsed == 0.0  # the clock held still: the server did not wait at all
 
-    clock = timer_on_sim_time(ros, master, None, "--goal", -2, "--start", 2000)
+    clock = timer_on_sim_time(ros, master, None, "--goal", -2, "--start", 2000, server_running=True)
     feedback, (state, status, elapsed, updates) = fancy_client(ros, clock, "--duration", "-2")
     assert (state, updates, feedback, elapsed) == (4, 0, [], 0.0)
     assert status == "Timer aborted due to negative wait (-2.000000 s)"
@@ -147,8 +166,8 @@ def test_simple_client_waits_for_the_server_then_gets_five_seconds(ros, master):
     hold.touch()
     assert client.poll() is None
     ros.start(["rosrun", "basics", "simple_action_server.py"])
-    assert client.wait(timeout=60) == 0
-    assert clock.wait(timeout=60) == 0, ros.output(clock)
+    assert wait_for_client(ros, client, clock) == 0, ros.output(client)
+    assert clock.wait(timeout=120) == 0, ros.output(clock)
     elapsed = float(re.search(r"^Time elapsed: (\S+)$", ros.output(client), re.M).group(1))
     assert 5.0 - 1e-6 <= elapsed <= 5.0 + 1e-6  # the clock held still at its end
 

@@ -38,12 +38,17 @@ def test_counter_publishes_consecutive_integers_at_2_hz(ros, master):
 def test_subscriber_prints_what_arrives_on_counter(ros, master):
     sub = ros.start(["rosrun", "basics", "topic_subscriber.py"])
     ros.wait_for(lambda: master.subscribers("counter"), timeout=60, what="the subscription")
-    # The book's `rostopic pub counter std_msgs/Int32 1000000`, once.
-    ros.run(["rostopic", "pub", "-1", "counter", "std_msgs/Int32", "1000000"], timeout=60)
-    ros.start(["rosrun", "basics", "topic_publisher.py"])
+    # The book's `rostopic pub counter std_msgs/Int32 1000000`: one latched message, kept
+    # until the subscriber has printed it (`-1` would latch it for 3 s only, which a loaded
+    # machine's connection can take longer than).
+    once = ros.start(["rostopic", "pub", "counter", "std_msgs/Int32", "1000000"])
 
     def printed():
         return [int(x) for x in re.findall(r"^(-?\d+)$", ros.output(sub), re.M)]
+
+    ros.wait_for(lambda: printed(), timeout=60, what="the subscriber to print 1000000")
+    ros.stop(once)
+    ros.start(["rosrun", "basics", "topic_publisher.py"])
 
     ros.wait_for(lambda: len(printed()) >= 4, timeout=60, what="four printed integers")
     values = printed()
@@ -81,8 +86,10 @@ def test_doubler_publishes_twice_its_input(ros, master):
     master.wait_for_topic("doubled")
     probe = ros.probe(["doubled"], count=2, timeout=60)
     # 2**30 doubled overflows Int32: the doubler warns and publishes nothing for it.
+    # Latched until the end (not `-1`, which latches for 3 s only): each reaches the doubler
+    # once, however long its connection takes.
     for args in (["21"], ["--", "-7"], ["1073741824"]):
-        ros.start(["rostopic", "pub", "-1", "number", "std_msgs/Int32", *args])
+        ros.start(["rostopic", "pub", "number", "std_msgs/Int32", *args])
     doubled = sorted(m["msg"]["data"] for m in probe.wait(70))
     assert doubled == [-14, 42]
     ros.wait_for(lambda: "does not fit in an Int32" in ros.output(doubler), 60, "overflow warning")

@@ -34,6 +34,9 @@ def start_exploration(ros, tmp_path, world, speed, use_slam, save_map=None):
     ros.run(["rosrun", "bullet_turtlebot", "world_to_map", str(world), "-f", str(truth)])
     # explore_sim.launch's simulator waits for a lagging driver (wait_for_commands 0.3).
     common = [f"world:={world}", f"speed:={speed}", "seed:=1", "start_paused:=true"]
+    # Before any node starts: rospy reads /use_sim_time once, in init_node, and a node
+    # started beside the launch that sets it could otherwise come up first on wall time.
+    ros.run(["rosparam", "set", "/use_sim_time", "true"])
     if use_slam:
         ros.start(["roslaunch", "explorer", "explore_sim.launch", *common], name="explore_sim")
     else:

@@ -11,6 +11,7 @@ import bisect
 import json
 import math
 import threading
+import time
 
 import actionlib
 import rospy
@@ -147,6 +148,11 @@ def main():
     if args.preempt_after is not None:
         t0 = rospy.get_time()
         client.send_goal(goal_of(*goals[0]))
+        # The preemption's delay counts from move_base's taking the goal: on a loaded machine
+        # its acceptance can take longer than the delay itself (wall time bounds the wait).
+        deadline = time.monotonic() + 60.0
+        while client.get_state() == GoalStatus.PENDING and time.monotonic() < deadline:
+            time.sleep(0.02)
         rospy.sleep(args.preempt_after)
         first_state = client.get_state()
         goals = goals[1:]

@@ -21,9 +21,9 @@ def test_ctrl_c_mid_goal_aborts_it_in_one_line(ros):
     ros.wait_for_topic("/move_base/status", timeout=90)
     status = ros.probe(["/move_base/status"], timeout=300)
     goal = "{header: {frame_id: map}, pose: {position: {x: 5.0, y: 0.0}, orientation: {w: 1.0}}}"
-    ros.start(
-        ["rostopic", "pub", "-1", "/move_base_simple/goal", "geometry_msgs/PoseStamped", goal]
-    )
+    # Latched for as long as it runs (`-1` latches for 3 s only): move_base gets the goal
+    # however long its subscription takes to connect.
+    ros.start(["rostopic", "pub", "/move_base_simple/goal", "geometry_msgs/PoseStamped", goal])
 
     def statuses():
         return [s["status"] for m in status.messages() for s in m["msg"]["status_list"]]

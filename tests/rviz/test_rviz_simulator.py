@@ -29,7 +29,7 @@ def test_teleop_view_on_the_simulated_playground(ros):
         ["roslaunch", "bullet_turtlebot", "simulator.launch", "world:=playground", "speed:=1"],
         name="simulator",
     )
-    ros.wait_for_topic("/camera/depth/points", timeout=30)
+    ros.wait_for_topic("/camera/depth/points", timeout=90)
     with rs.RvizSession(rc.RVIZ / "teleop.rviz", ros.env, ros.workdir / "rviz") as rviz:
 
         def ready(img):
@@ -43,7 +43,7 @@ def test_teleop_view_on_the_simulated_playground(ros):
                 and all(shows_an_image(p) for p in panels)
             )
 
-        path, img = rviz.settle(ready, timeout=30)
+        path, img = rviz.settle(ready, timeout=60)
         view, masks, counts = rc.measure(rviz, img)
         panels = rviz.panels(img)
     what = f"screenshot {path}; pixel counts {counts}"
@@ -67,7 +67,7 @@ def test_top_down_view_follows_the_simulated_robot(ros):
         ["roslaunch", "bullet_turtlebot", "simulator.launch", "world:=playground", "speed:=1"],
         name="simulator",
     )
-    ros.wait_for_topic("/odom", timeout=30)
+    ros.wait_for_topic("/odom", timeout=90)
     rc.drive_teleop(ros, 0.3, 0.3)  # a circle of radius 1 m
     with rs.RvizSession(rc.RVIZ / "top_down.rviz", ros.env, ros.workdir / "rviz") as rviz:
 
@@ -76,7 +76,7 @@ def test_top_down_view_follows_the_simulated_robot(ros):
             trail = max(rs.extent(masks["odom"]))
             return counts["robot"] > 300 and counts["scan"] > 100 and trail > 80
 
-        path, img = rviz.settle(ready, timeout=30)
+        path, img = rviz.settle(ready, timeout=60)
         view, masks, counts = rc.measure(rviz, img)
     what = f"screenshot {path}; pixel counts {counts}"
     assert counts["robot"] > 300, "robot model missing: " + what

@@ -36,7 +36,7 @@ def test_mapping_view_while_slam_builds_the_map(ros):
         ["roslaunch", "bullet_turtlebot", "simulator.launch", "world:=playground", "speed:=1"],
         name="simulator",
     )
-    ros.wait_for_topic("/scan", timeout=30)
+    ros.wait_for_topic("/scan", timeout=90)
     # A 30 m square map (the book sets the bounds too) updated every 2 s keeps the test short.
     slam = ["rosrun", "gmapping_lite", "slam_gmapping", "_map_update_interval:=2.0"]
     slam += [f"_{k}:={v}" for k, v in (("xmin", -15), ("ymin", -15), ("xmax", 15), ("ymax", 15))]
@@ -51,7 +51,7 @@ def test_mapping_view_while_slam_builds_the_map(ros):
             mapped = counts["free"] > 20000 and counts["wall"] > 300
             return mapped and seen > 100 and on_walls > 0.5
 
-        path, img = rviz.settle(ready, timeout=30)
+        path, img = rviz.settle(ready, timeout=60)
         view, masks, counts = rc.measure(rviz, img)
     what = f"screenshot {path}; pixel counts {counts}"
     # The playground is several metres across: > 20 m² seen free, walls, unknown around.
