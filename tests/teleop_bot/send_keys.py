@@ -1,6 +1,11 @@
 #!/usr/bin/python3
 """Publish keys on `keys` (std_msgs/String) as a keyboard would: KEY@SECONDS ... where the
-seconds count from the moment the `keys` subscriber is connected. `space` stands for " "."""
+seconds count from the moment the `keys` subscriber is connected. `space` stands for " ".
+
+--ack TOPIC: before each next key, wait until TOPIC has had every message the keys so far
+call for (KEY@SECONDS/N: N messages, default 0): a node stalled by a loaded machine then gets
+its keys one at a time, as a typist waiting for the robot would send them, and its
+queue_size=1 publisher has no reason to drop one."""
 
 import sys
 import time
@@ -11,27 +16,44 @@ from std_msgs.msg import String
 
 
 def main():
+    args = rospy.myargv()[1:]
+    ack_topic = None
+    if args[:1] == ["--ack"]:
+        ack_topic, args = args[1], args[2:]
     plan = []
-    for arg in rospy.myargv()[1:]:
-        key, _, at = arg.rpartition("@")
-        plan.append((" " if key == "space" else key, float(at)))
+    for arg in args:
+        key, _, spec = arg.rpartition("@")
+        at, _, answers = spec.partition("/")
+        plan.append((" " if key == "space" else key, float(at), int(answers or 0)))
     rospy.init_node("send_keys", anonymous=True)
+    acked = []
+    if ack_topic:
+        ack = rospy.Subscriber(ack_topic, rospy.AnyMsg, acked.append)
     with warnings.catch_warnings():
         # No queue: publishing is synchronous, so each key is on the wire when publish()
         # returns and exiting right after the last one loses nothing.
         warnings.simplefilter("ignore", SyntaxWarning)
         pub = rospy.Publisher("keys", String)
     deadline = time.monotonic() + 60
-    while pub.get_num_connections() == 0:
+    while pub.get_num_connections() == 0 or (ack_topic and ack.get_num_connections() == 0):
         if time.monotonic() > deadline:
-            print("send_keys: nobody subscribes to keys", file=sys.stderr)
+            missing = f"nobody subscribes to keys (or publishes {ack_topic})"
+            print(f"send_keys: {missing}", file=sys.stderr)
             return 3
         time.sleep(0.02)
     # The spacing only paces the keys like a typist; the nodes handle them in order anyway.
     start = time.monotonic()
-    for key, at in plan:
+    due = 0
+    for key, at, answers in plan:
+        deadline = time.monotonic() + 60
+        while len(acked) < due:
+            if time.monotonic() > deadline:
+                print(f"send_keys: {ack_topic} had {len(acked)} of {due}", file=sys.stderr)
+                return 4
+            time.sleep(0.01)
         time.sleep(max(0.0, start + at - time.monotonic()))
         pub.publish(key)
+        due += answers
     return 0
 
 

@@ -62,7 +62,8 @@ def wait_for_values(ros, probe, values, what):
 def test_keys_to_twist_one_twist_per_known_key(ros):
     start_node(ros, "keys_to_twist.py")
     probe = ros.probe(["cmd_vel"], count=5, timeout=90)
-    ros.run(SEND_KEYS + ["w@0", "q@0.2", "a@0.4", "d@0.6", "Z@0.8", "x@1.0", "s@1.2"], timeout=60)
+    keys = ["w@0/1", "q@0.2", "a@0.4/1", "d@0.6/1", "Z@0.8", "x@1.0/1", "s@1.2/1"]
+    ros.run(SEND_KEYS + ["--ack", "cmd_vel", *keys], timeout=120)
     values = [(lin, ang) for _, lin, ang in twists(probe.wait(100))]
     # 'a' turns left: positive yaw rate (REP 103); q and Z are not driving keys.
     assert values == [(1.0, 0.0), (0.0, 1.0), (0.0, -1.0), (-1.0, 0.0), (0.0, 0.0)]

@@ -1,9 +1,12 @@
 #!/usr/bin/python3
 """Publish synthetic LaserScans on `scan` at 10 Hz following a schedule: PATTERN@SECONDS ...
 (seconds from the first subscriber). Patterns: clear (NaN and +inf only), near (0.5 m in one
-beam, NaN elsewhere), minus (one -inf beam), allnan, far (2.0 m everywhere)."""
+beam, NaN elsewhere), minus (one -inf beam), allnan, far (2.0 m everywhere).
+Here (not lockstep_scans) PATTERN@/ABS/PATH is due once that file exists: a test moves the
+schedule on when it has seen what it needs, whatever the load."""
 
 import math
+import os
 import sys
 import time
 
@@ -52,14 +55,31 @@ def scan_at(plan, now, stamp):
     return scan
 
 
+def split_triggers(items):
+    """The timed items, and [(path, pattern)] of those due when a file exists."""
+    timed, triggered = [], []
+    for item in items:
+        pattern, _, at = item.partition("@")
+        if at.startswith("/"):
+            ranges(pattern)  # an unknown pattern exits here
+            triggered.append((at, pattern))
+        else:
+            timed.append(item)
+    return timed, triggered
+
+
 def main():
-    plan = parse_plan(rospy.myargv()[1:])
+    timed, triggered = split_triggers(rospy.myargv()[1:])
+    plan = parse_plan(timed)
     rospy.init_node("fake_scan")
     pub = rospy.Publisher("scan", LaserScan, queue_size=10)
     while pub.get_num_connections() == 0 and not rospy.is_shutdown():
         time.sleep(0.02)
     start = time.monotonic()
     while not rospy.is_shutdown():
+        for path, pattern in [t for t in triggered if os.path.exists(t[0])]:
+            plan.append((-math.inf, pattern))  # due from now on; last, so it wins
+            triggered.remove((path, pattern))
         pub.publish(scan_at(plan, time.monotonic() - start, rospy.Time.now()))
         time.sleep(0.1)
 

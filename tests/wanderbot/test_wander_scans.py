@@ -92,9 +92,12 @@ def test_book_form_from_the_scripts_dir_with_remap(ros, script):
 
 
 def test_range_ahead_prints_the_book_line_and_handles_inf(ros):
-    ros.start(FAKE_SCAN + ["far@0", "clear@2"])
+    clear = ros.workdir / "clear-now"
+    ros.start(FAKE_SCAN + ["far@0", f"clear@{clear}"])
     node = ros.start(["rosrun", "wanderbot", "range_ahead.py"], name="range_ahead")
-    ros.wait_for(lambda: "nothing in range" in ros.output(node), 30, "the inf line")
+    ros.wait_for(lambda: "range ahead: 2.0\n" in ros.output(node), 60, "the 2.0 m line")
+    clear.touch()
+    ros.wait_for(lambda: "nothing in range" in ros.output(node), 60, "the inf line")
     out = ros.output(node)
     assert "range ahead: 2.0\n" in out
     assert "Traceback" not in out
