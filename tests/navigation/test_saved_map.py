@@ -136,14 +136,22 @@ def test_goal_on_a_slam_map_is_reached_in_the_world(ros):
     amcl = ros.echo("/amcl_pose", count=1, timeout=60)[0]["msg"]["pose"]["pose"]["position"]
     # move_base's own pose now: amcl's newest map -> odom correction with odometry.
     odom = ros.echo("/odom", count=1, timeout=60)[0]["msg"]["pose"]["pose"]
-    corrections = [
-        tf["transform"]
-        for message in ros.echo("/tf", count=30, timeout=60)
-        for tf in message["msg"]["transforms"]
-        if tf["header"]["frame_id"].lstrip("/") == "map"
-        and tf["child_frame_id"].lstrip("/") == "odom"
-    ]
-    assert corrections, "no map -> odom transform from amcl on /tf"
+    # amcl sends one a scan among the many /tf messages of the other nodes: wait for it (a
+    # fixed count of /tf messages can hold none while amcl waits for the CPU).
+    tf_probe = ros.probe(["/tf"], timeout=120)
+
+    def amcl_corrections():
+        return [
+            tf["transform"]
+            for message in tf_probe.messages()
+            for tf in message["msg"]["transforms"]
+            if tf["header"]["frame_id"].lstrip("/") == "map"
+            and tf["child_frame_id"].lstrip("/") == "odom"
+        ]
+
+    ros.wait_for(amcl_corrections, 90, "amcl's map -> odom transform on /tf")
+    corrections = amcl_corrections()
+    tf_probe.stop()
     own = compose(
         (
             corrections[-1]["translation"]["x"],
