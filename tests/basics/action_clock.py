@@ -49,10 +49,9 @@ class ActionClock:
         self.args = args
         self.clock_ns = round(args.start * NS)
         self.cond = threading.Condition()
-        self.seen = {"feedback": [], "cancel": [], "result": [], "active": []}
+        self.seen = {"feedback": [], "cancel": [], "result": [], "active": [], "goal": []}
         self.out = open(args.out, "w")
         self.pub = rospy.Publisher("/clock", Clock, queue_size=10)
-        self.seen["goal"] = []
         self.subscribers = {
             kind: rospy.Subscriber(topic, msg_class, self.record, (topic, kind), queue_size=100)
             for topic, kind, msg_class in (
@@ -99,16 +98,14 @@ class ActionClock:
         """Create --out + ".ready" once this clock hears everything a server sends (feedback,
         status, result): a test waits for it before it sends a goal, so that no one-off
         message (an abort's only result) goes out before the connection that carries it."""
-        if self.ready:
-            return
-        kinds = ("feedback", "status", "result")
-        if all(self.subscribers[k].get_num_connections() > 0 for k in kinds):
+        if not self.ready and self.hears("feedback", "status", "result"):
             with open(self.ready_file, "w"):
                 pass
             self.ready = True
 
-    def hears_results(self):
-        return self.subscribers["result"].get_num_connections() > 0
+    def hears(self, *kinds):
+        """Connected to a publisher of each of these topics."""
+        return all(self.subscribers[k].get_num_connections() > 0 for k in kinds)
 
     def result_seen(self):
         return self.count("result") > 0
@@ -175,7 +172,7 @@ class ActionClock:
             return self.handled(started, 1) or (args.simple and self.count("goal") > 0)
 
         self.hold_until(
-            lambda: self.result_seen() or (goal_started() and self.hears_results()),
+            lambda: self.result_seen() or (goal_started() and self.hears("result")),
             "the server to start a goal",
         )
         wait = args.goal
