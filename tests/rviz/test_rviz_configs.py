@@ -142,7 +142,7 @@ def rviz_config_of(package, *launch):
         env=ros_environment(free_port()),
         capture_output=True,
         text=True,
-        timeout=30,
+        timeout=120,  # a deadline only: roslaunch took 21 s to start at load 16
     )
     assert done.returncode == 0, done.stderr
     args = done.stdout.split()
