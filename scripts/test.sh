@@ -13,4 +13,5 @@ unit_dirs=(catkin_ws/src/*/test)
 # that run at a set speed), so with three workers on two cores the load stayed near 1; and the
 # tests do not depend on load (sim time, held clocks).
 workers=${ROSBOOK_TEST_WORKERS:-$((2 * $(nproc)))}
-exec /usr/bin/python3 -m pytest -n "$workers" tests "${unit_dirs[@]}" "$@"
+# --dist loadscope: whole modules to a worker, longest first (tests/conftest.py says why).
+exec /usr/bin/python3 -m pytest -n "$workers" --dist loadscope tests "${unit_dirs[@]}" "$@"

@@ -69,11 +69,14 @@ def _is_fast_match(nodeid, name):
 
 
 # -- order ----------------------------------------------------------------------------------
-# With several workers (pytest-xdist hands tests out in collection order), a long test that
-# starts last runs alone while the other workers idle. The modules holding the tests that took
-# longest in a recorded run (tests/durations.txt, see tests/tools/record_durations.py) start
-# first, longest first; a module's own order is kept (its tests may share a roscore), and
-# tests the file does not name keep their order after them. A stale file only costs time.
+# scripts/test.sh runs pytest-xdist with `--dist loadscope`: a whole module goes to one worker
+# (so a module's shared roscore or main-job run is set up once), and an idle worker takes the
+# next module in collection order. Ordered longest first by the module's recorded total
+# (tests/durations.txt, see tests/tools/record_durations.py), that is greedy
+# longest-processing-time scheduling, which ends within a third of the best possible
+# finish. (Plain `--dist load` hands out runs of consecutive tests: one worker got every long
+# module and ran for minutes after the others had finished.) Modules the file does not name
+# go last; a stale file only costs time.
 DURATIONS = Path(__file__).resolve().parent / "durations.txt"
 
 
@@ -90,8 +93,8 @@ def _recorded_durations():
 
 def _long_modules_first(items):
     recorded = _recorded_durations()
-    longest = {}
+    total = {}
     for item in items:
         module = item.nodeid.split("::", 1)[0]
-        longest[module] = max(longest.get(module, 0.0), recorded.get(item.nodeid, 0.0))
-    items.sort(key=lambda item: -longest[item.nodeid.split("::", 1)[0]])
+        total[module] = total.get(module, 0.0) + recorded.get(item.nodeid, 0.0)
+    items.sort(key=lambda item: -total[item.nodeid.split("::", 1)[0]])
