@@ -49,6 +49,32 @@ def _rosout_binary(env):
     return _find_rosout(env.get("CMAKE_PREFIX_PATH", ""))
 
 
+def launch_node_list(launch_args, env):
+    """The node names `roslaunch --nodes LAUNCH_ARGS` prints under `env`, from roslaunch's own
+    loader in this process: a roslaunch process costs over a CPU second to start, and the
+    suite asks this some fifty times. Substitutions ($(optenv), <param command=...>) see
+    `env`. Raises roslaunch's RLException where the command would exit 1."""
+    from roslaunch import config, node_args, rlutil, xmlloader
+
+    saved = dict(os.environ)
+    os.environ.clear()
+    os.environ.update(env)
+    try:
+        # roslaunch reads `name:=value` arguments from sys.argv: hand them over with each file.
+        files = rlutil.resolve_launch_arguments(list(launch_args))
+        loaded = config.load_config_default(
+            [(path, ["roslaunch", *launch_args]) for path in files],
+            None,
+            loader=xmlloader.XmlLoader(resolve_anon=False),
+            verbose=False,
+            assign_machines=False,
+        )
+        return node_args.get_node_list(loaded)
+    finally:
+        os.environ.clear()
+        os.environ.update(saved)
+
+
 def ros_environment(port, base=None):
     """The environment for nodes of a master on `port`: `base` (default: this process's, set
     up by devel/setup.bash) with the master's address and test-friendly logging."""

@@ -15,6 +15,7 @@ REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(REPO / "tests"))
 sys.path.insert(0, str(REPO / "tests" / "tools"))
 from listening import tcp_listening_ports, udp_ports  # noqa: E402
+from roskit import launch_node_list  # noqa: E402
 
 # launch file (relative to the repository) -> (arguments, needs a display, reads keys from a
 # terminal: then it gets a pseudo-terminal as stdin)
@@ -148,8 +149,8 @@ def test_launch_file_brings_up_its_nodes(ros, tmp_path, request, launch_file):
     if "bag:={tmp}/tiny.bag".replace("{tmp}", str(tmp_path)) in args:
         write_tiny_bag(tmp_path / "tiny.bag")
     path = str(REPO / launch_file)
-    listed = ros.run(["roslaunch", "--nodes", path, *args], timeout=60).stdout.split()
-    assert listed, f"roslaunch --nodes listed nothing for {launch_file}"
+    listed = launch_node_list([path, *args], ros.env)
+    assert listed, f"roslaunch --nodes lists nothing for {launch_file}"
     expected = {"/" + name.lstrip("/") for name in listed}
     cmd = ["roslaunch", path, *args]
     if display:
