@@ -15,6 +15,16 @@ import rospy
 from std_msgs.msg import String
 
 
+def waited(condition, seconds=60.0, interval=0.01):
+    """Whether condition() came true within `seconds` (a bound on a hang, in wall time)."""
+    deadline = time.monotonic() + seconds
+    while not condition():
+        if time.monotonic() > deadline:
+            return False
+        time.sleep(interval)
+    return True
+
+
 def main():
     args = rospy.myargv()[1:]
     ack_topic = None
@@ -34,23 +44,21 @@ def main():
         # returns and exiting right after the last one loses nothing.
         warnings.simplefilter("ignore", SyntaxWarning)
         pub = rospy.Publisher("keys", String)
-    deadline = time.monotonic() + 60
-    while pub.get_num_connections() == 0 or (ack_topic and ack.get_num_connections() == 0):
-        if time.monotonic() > deadline:
-            missing = f"nobody subscribes to keys (or publishes {ack_topic})"
-            print(f"send_keys: {missing}", file=sys.stderr)
-            return 3
-        time.sleep(0.02)
+
+    def connected():
+        return pub.get_num_connections() > 0 and not (ack_topic and ack.get_num_connections() == 0)
+
+    if not waited(connected, interval=0.02):
+        missing = f"nobody subscribes to keys (or publishes {ack_topic})"
+        print(f"send_keys: {missing}", file=sys.stderr)
+        return 3
     # The spacing only paces the keys like a typist; the nodes handle them in order anyway.
     start = time.monotonic()
     due = 0
     for key, at, answers in plan:
-        deadline = time.monotonic() + 60
-        while len(acked) < due:
-            if time.monotonic() > deadline:
-                print(f"send_keys: {ack_topic} had {len(acked)} of {due}", file=sys.stderr)
-                return 4
-            time.sleep(0.01)
+        if not waited(lambda due=due: len(acked) >= due):
+            print(f"send_keys: {ack_topic} had {len(acked)} of {due}", file=sys.stderr)
+            return 4
         time.sleep(max(0.0, start + at - time.monotonic()))
         pub.publish(key)
         due += answers
