@@ -49,6 +49,37 @@ def _rosout_binary(env):
     return _find_rosout(env.get("CMAKE_PREFIX_PATH", ""))
 
 
+@functools.lru_cache(maxsize=None)
+def _rosrun_target(package, executable, prefix_path, package_path):
+    """The file `rosrun PACKAGE EXECUTABLE` runs, asked of rosrun itself (`--prefix echo`
+    prints it instead of running it), or None where rosrun finds no single file."""
+    found = subprocess.run(
+        ["rosrun", "--prefix", "echo", package, executable],
+        capture_output=True,
+        text=True,
+        stdin=subprocess.DEVNULL,
+        env={**os.environ, "CMAKE_PREFIX_PATH": prefix_path, "ROS_PACKAGE_PATH": package_path},
+    )
+    path = found.stdout.strip()
+    if found.returncode != 0 or not os.path.isfile(path) or not os.access(path, os.X_OK):
+        return None
+    return path
+
+
+def without_rosrun(cmd, env):
+    """`cmd` with a leading `rosrun PACKAGE EXECUTABLE` replaced by the file rosrun would run,
+    found once per worker and workspace: rosrun's search (catkin_find, rospack, find) costs a
+    third of a CPU second per call, and the suite makes hundreds. Anything else (a shell
+    string, rosrun's options, a name rosrun cannot resolve to one file) is left to rosrun, so
+    its own errors still show."""
+    if isinstance(cmd, str) or len(cmd) < 3 or cmd[0] != "rosrun" or cmd[1].startswith("-"):
+        return cmd
+    path = _rosrun_target(
+        cmd[1], cmd[2], env.get("CMAKE_PREFIX_PATH", ""), env.get("ROS_PACKAGE_PATH", "")
+    )
+    return cmd if path is None else [path, *cmd[3:]]
+
+
 def launch_node_list(launch_args, env):
     """The node names `roslaunch --nodes LAUNCH_ARGS` prints under `env`, from roslaunch's own
     loader in this process: a roslaunch process costs over a CPU second to start, and the
@@ -129,7 +160,7 @@ class RosGraph:
         log_path = self.workdir / f"{self._log_index:02d}-{_safe(label)}.log"
         log = open(log_path, "w")
         proc = subprocess.Popen(
-            cmd,
+            without_rosrun(cmd, env or self.env),
             shell=isinstance(cmd, str),
             stdout=log,
             stderr=subprocess.STDOUT,
@@ -148,7 +179,7 @@ class RosGraph:
         timeout only catches a hang: on a loaded machine even `roslaunch --nodes` (a few
         rospack calls) has taken over 30 s."""
         done = subprocess.run(
-            cmd,
+            without_rosrun(cmd, self.env),
             shell=isinstance(cmd, str),
             capture_output=True,
             text=True,

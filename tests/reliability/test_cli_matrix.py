@@ -11,6 +11,7 @@ import socket
 import subprocess
 
 import pytest
+from roskit import without_rosrun
 
 CASES = {
     # map_saver
@@ -461,7 +462,7 @@ def test_bad_input_is_a_clear_error_and_writes_nothing(case, tmp_path):
     argv = [a.replace("{tmp}", str(tmp_path)).replace("{nested}", str(nested)) for a in args]
     env = dict(os.environ, ROS_MASTER_URI=dead_master_uri(), PYENV_VERSION="system")
     done = subprocess.run(
-        ["rosrun", *argv],
+        without_rosrun(["rosrun", *argv], env),
         capture_output=True,
         text=True,
         timeout=60,
