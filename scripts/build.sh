@@ -17,10 +17,9 @@ if [ -f build/CMakeCache.txt ] && grep -q "^CMAKE_BUILD_TYPE:STRING=Release$" bu
   cmake_args=()
 fi
 log=$(mktemp)
-# devel space, the C++ tests, and the install space (catkin_ws/install, tested by the suite).
-if ! catkin_make -j"$jobs" "${cmake_args[@]}" >"$log" 2>&1 \
-   || ! catkin_make -j"$jobs" tests >>"$log" 2>&1 \
-   || ! catkin_make -j"$jobs" install >>"$log" 2>&1; then
+# devel space, the C++ tests, and the install space (catkin_ws/install, tested by the suite),
+# in one catkin_make: each call checks the whole build system again.
+if ! catkin_make -j"$jobs" "${cmake_args[@]}" all tests install >"$log" 2>&1; then
   tail -n 60 "$log"
   echo "build: FAILED (full log: $log)" >&2
   exit 1
