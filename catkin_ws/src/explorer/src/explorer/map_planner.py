@@ -55,6 +55,11 @@ class PlannerParams:
     view_range: float = 4.0  # m: frontier cells this near a view count as seen
     view_half_angle: float = 0.45  # rad: within this bearing of a view's heading
     look_wiggle: float = 0.5  # rad: turn at least this much while looking at a frontier
+    # rad: SLAM maps a scan only after the robot turned this much (angularUpdate of
+    # gmapping_lite's Turtlebot tuning, 0.436 rad), at a phase the explorer does not know:
+    # a look reaches this far past the view that just covers its frontier at each end, so
+    # that mapped scans cover all of it (0: the map takes in every scan).
+    map_angular_update: float = 0.436
     switch_margin: float = 1.0  # m: keep the current goal unless another scores this much better
     blacklist_radius: float = 0.8  # m
     free_threshold: int = 25
@@ -345,7 +350,8 @@ class MapPlanner:
         sx, sy = self.prepared.geometry.to_world(cells[:, 0], cells[:, 1])
         bearings = np.arctan2(sy - gy, sx - gx)
         p = self.params
-        headings = sweep_headings(bearings, p.view_half_angle, 2 * p.view_half_angle)
+        h = p.view_half_angle
+        headings = sweep_headings(bearings, h, 2 * h, p.map_angular_update, p.look_wiggle)
         if len(headings) == 1 and p.look_wiggle > 0:
             # Turn across the heading: SLAM integrates a scan only after the robot turned
             # angularUpdate (0.436 rad in the Turtlebot tuning), so a look that turns
