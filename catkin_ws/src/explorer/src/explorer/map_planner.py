@@ -6,7 +6,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .costmap import inflate
+from .costmap import Costmap, inflate
 from .frontiers import find_frontiers, information_gain
 from .grid import FREE, UNKNOWN, GridGeometry, classify, downsample, known_window
 from .planner import approach_labels, choose_goal, distance_field, extract_path
@@ -88,6 +88,10 @@ class PreparedMap:
     labels: np.ndarray
     frontiers: list = field(default_factory=list)
     near: np.ndarray = None  # approach_labels of all frontiers (once per map)
+    # Cells the robot's body may fit on (without the safety margin, and allowing for the
+    # coarse grid's grown obstacles): where plan() looks when nothing is reachable on
+    # `costmap`.
+    tight: object = None
 
 
 class MapPlanner:
@@ -129,7 +133,14 @@ class MapPlanner:
             labels[np.isin(labels, dropped)] = 0
             frontiers = [f for f in frontiers if f.label not in dropped]
         near = approach_labels(labels, coarse, geometry.resolution, p.reach_max)
-        self.prepared = PreparedMap(geometry, coarse, costmap, labels, frontiers, near)
+        # The coarse grid makes a block occupied if any of its cells is: obstacles grow by
+        # up to (factor - 1) map cells, so the body may fit where the coarse clearance
+        # exceeds its radius less that.
+        body = p.robot_radius - (factor - 1) * resolution
+        tight = Costmap(
+            (coarse == FREE) & (costmap.clearance > body), costmap.cost, costmap.clearance
+        )
+        self.prepared = PreparedMap(geometry, coarse, costmap, labels, frontiers, near, tight)
         return True
 
     @property
@@ -157,6 +168,7 @@ class MapPlanner:
         views=(),
         dead_frontiers=(),
         close_targets=(),
+        tight=False,
     ):
         """Plan from (x, y) to the best frontier; None if no frontier is reachable.
 
@@ -169,7 +181,10 @@ class MapPlanner:
         view along a shadow's edge, an occluded corner): it is approached closely instead,
         from a goal on the frontier, and the look turns towards the unknown cells behind
         it rather than towards the frontier cells. `start_blocked` tells afterwards
-        whether None meant no traversable cell near the robot."""
+        whether None meant no traversable cell near the robot. With nothing reachable, it
+        plans once more over the cells the robot's body may fit on (`tight`: without the
+        safety margin and the coarse grid's growth of obstacles): the robot may stand in a
+        pocket that only those close."""
         self.start_blocked = False
         prep = self.prepared
         if prep is None or not prep.frontiers:
@@ -183,7 +198,8 @@ class MapPlanner:
         far_labels, far, close_labels, close = self._split(labels, frontiers, close_targets)
         start = tuple(int(v) for v in g.to_cell(x, y))
         snap = int(math.ceil(0.5 / g.resolution))
-        dist = distance_field(prep.costmap, start, g.resolution, snap_cells=snap)
+        costmap = prep.tight if tight else prep.costmap
+        dist = distance_field(costmap, start, g.resolution, snap_cells=snap)
         if dist is None:
             self.start_blocked = True
             return None
@@ -248,6 +264,21 @@ class MapPlanner:
 
         chosen = choose(excluded)
         if chosen is None:
+            if not tight:
+                # The way out of where the robot stands may be closed by the safety margin
+                # and the coarse grid alone (it came in that way: pure pursuit cuts
+                # corners, the map grew a wall beside the gap); try where the body may fit,
+                # at the highest inflation cost. Nothing there either: none left.
+                return self.plan(
+                    x,
+                    y,
+                    excluded_points,
+                    current_goal,
+                    views,
+                    dead_frontiers,
+                    close_targets,
+                    tight=True,
+                )
             return None
         kept = False
         if current_goal is not None:
