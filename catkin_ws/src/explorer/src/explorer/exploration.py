@@ -274,7 +274,7 @@ class Explorer:
                     f"frontier at ({tx:.2f}, {ty:.2f}) looked at {visits + 1} times closely: "
                     "set aside"
                 )
-                self.dead_frontiers.add(tx, ty, now)
+                self._set_aside(tx, ty, now)
             else:
                 # From afar the view may graze along a shadow's edge: go up to it.
                 self.events.append(
@@ -283,6 +283,21 @@ class Explorer:
                 )
                 self._approach_closely(tx, ty, now)
         self.reached.append((tx, ty, now, close))
+
+    def _set_aside(self, tx, ty, now):
+        """Set aside the frontier cells this goal was chosen for: around each of them, not
+        only around their mean (the target), which may lie blacklist_radius from all of
+        them when they are spread out; then the planner would choose them again and again."""
+        points = getattr(self.plan, "seen_points", None)
+        if points is None or not len(points):
+            points = [(tx, ty)]
+        radius = self.dead_frontiers.radius
+        active = self.dead_frontiers.active(now)
+        for x, y in points:
+            # One entry per blacklist_radius is enough.
+            if all(math.hypot(x - dx, y - dy) >= radius / 2 for dx, dy in active):
+                self.dead_frontiers.add(float(x), float(y), now)
+                active.append((x, y))
 
     def _approach_closely(self, x, y, now):
         radius = self.close_targets.radius

@@ -78,6 +78,8 @@ class Plan:
     kept: bool = False  # the previous goal was kept
     target: tuple = (0.0, 0.0)  # (x, y): middle of the frontier cells seen from the goal
     close: bool = False  # a close approach: the goal stands at the frontier (see plan())
+    # (K, 2) x, y of the frontier cells seen from the goal (their mean is `target`)
+    seen_points: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
 
 
 @dataclass
@@ -291,6 +293,7 @@ class MapPlanner:
         path = np.vstack([[x, y], np.column_stack([xs, ys])])
         gx, gy = g.to_world(*best.cell)
         tx, ty = g.to_world(best.seen[:, 0].mean(), best.seen[:, 1].mean())
+        seen_points = np.column_stack(g.to_world(best.seen[:, 0], best.seen[:, 1]))
         return Plan(
             (float(gx), float(gy)),
             path,
@@ -302,6 +305,7 @@ class MapPlanner:
             kept,
             (float(tx), float(ty)),
             is_close,
+            seen_points.reshape(-1, 2),
         )
 
     def _unseen(self, labels, frontiers, views):
