@@ -92,6 +92,29 @@ def test_stuck_robot_recovers():
     assert any("stuck" in e for e in explorer.events)
 
 
+def test_a_long_goal_gets_its_whole_path_s_time_though_kept_plans_shorten_the_path():
+    """The plans kept on the way carry what is left of the path; measured against the time
+    since the goal began, they used to time out every long goal just before arrival."""
+    explorer = Explorer()
+    t = spun(explorer)
+    far = plan(goal=(20.0, 0.0))
+    far.cost = 20.0
+    explorer.accept_plan(far, t, map_stamp=t)
+    expected = 20.0 / explorer.follower_params.max_linear
+    limit = explorer.params.goal_timeout_factor * expected
+    x = 0.0
+    for k in range(1, int(limit)):
+        left = plan(goal=(20.0, 0.0), kept=True)
+        left.cost = 1.0
+        x = min(19.0, x + 0.1)
+        explorer.accept_plan(left, t + k, map_stamp=t + k)
+        explorer.control(t + k, x, 0.0, 0.0)
+        assert explorer.state == FOLLOW, k
+    explorer.control(t + limit + 1, x, 0.0, 0.0)
+    assert explorer.state == WAIT and explorer.excluded_points(t + limit + 1) == [(20.0, 0.0)]
+    assert any("timed out" in e for e in explorer.events)
+
+
 def look_at(explorer, t, close=False, goal=(2.0, 0.0)):
     """Plan for the frontier beyond `goal`, arrive at once, finish looking; the time after."""
     p = plan(goal=goal)

@@ -67,6 +67,7 @@ class Explorer:
         self.follower = None
         self.plan = None
         self.goal_started = 0.0
+        self.goal_deadline = math.inf  # give up the goal (blacklist it) after this time
         self.last_plan_time = -math.inf
         self.plan_requested = False
         self.recovery = None
@@ -157,6 +158,12 @@ class Explorer:
                 f"{plan.frontiers_left} frontiers left{', close approach' if plan.close else ''}"
             )
             self.goal_started = now
+            # From the whole path's expected time, fixed for the goal: a kept plan's path
+            # is only what is left of it, and measured against the time since the start
+            # it gave up every long goal shortly before the robot got there.
+            expected = plan.cost / max(self.follower_params.max_linear, 1e-3)
+            p = self.params
+            self.goal_deadline = now + max(p.goal_timeout_min, p.goal_timeout_factor * expected)
             self.stuck.reset()
         self.plan = plan
         self.follower = PurePursuit(plan.path, self.follower_params)
@@ -321,9 +328,7 @@ class Explorer:
             self.look_queue = headings
             self.state = LOOK
             return self._look(now, x, y, yaw)
-        expected = self.plan.cost / max(self.follower_params.max_linear, 1e-3)
-        limit = max(p.goal_timeout_min, p.goal_timeout_factor * expected)
-        if now - self.goal_started > limit:
+        if now > self.goal_deadline:
             self.events.append(f"goal timed out after {now - self.goal_started:.0f} s: blacklisted")
             self.blacklist.add(*self.plan.goal, now)
             self._request_plan(WAIT)
