@@ -16,7 +16,7 @@ sys.path.insert(0, str(REPO / "catkin_ws" / "src" / "bullet_turtlebot" / "src"))
 from bullet_turtlebot import world_check  # noqa: E402
 from bullet_turtlebot.world_families import generate  # noqa: E402
 from bullet_turtlebot.world_file import write_world  # noqa: E402
-from kinematic_sim import GridWorld, KinematicBase, RunResult  # noqa: E402
+from kinematic_sim import KINECT, GridWorld, KinematicBase, RunResult  # noqa: E402
 
 
 def family_world(family, seed, folder):
@@ -40,13 +40,14 @@ def explore(
     robot_radius=0.18,
     update=(0.5, 0.436),
     on_step=None,
+    laser=KINECT,
 ):
     """Like kinematic_sim.explore, but the map is published only when the mapper
     integrated a scan since the last one (gmapping publishes after processing a scan, so
     a robot standing still gets no new map), and the explorer gets everything the node
     gives it. `on_step(now, explorer, mapper, reachable)` is called after each control
-    step."""
-    robot = KinematicBase(world, start, robot_radius, update)
+    step. `laser`: kinematic_sim.Laser (the Kinect by default)."""
+    robot = KinematicBase(world, start, robot_radius, update, laser)
     next_map = next_scan = 0.0
     map_stamp = None
     integrated = False
@@ -89,3 +90,53 @@ def explore(
         explorer.goals_reached,
         {},
     )
+
+
+def main(argv=None):
+    """Coverage over time of one family world, e.g. the wide laser under live SLAM's
+    Turtlebot tuning: `kinematic_run.py warehouse 1 300 --laser wide-turtlebot-slam`."""
+    import argparse
+    import tempfile
+    import time
+
+    from explorer.exploration import Explorer
+    from explorer.map_planner import MapPlanner
+    from kinematic_sim import KINECT, WIDE, WIDE_TURTLEBOT_SLAM
+
+    lasers = {"kinect": KINECT, "wide": WIDE, "wide-turtlebot-slam": WIDE_TURTLEBOT_SLAM}
+    parser = argparse.ArgumentParser(description=main.__doc__)
+    parser.add_argument("family")
+    parser.add_argument("seed", type=int)
+    parser.add_argument("seconds", type=float)
+    parser.add_argument("--laser", choices=sorted(lasers), default="kinect")
+    args = parser.parse_args(argv)
+    marks = {}
+
+    def on_step(now, explorer, mapper, reachable):
+        mark = 150 * int(now // 150)
+        if mark and mark not in marks:
+            marks[mark] = float((mapper.known() & reachable).sum() / reachable.sum())
+
+    with tempfile.TemporaryDirectory() as folder:
+        world, start = family_world(args.family, args.seed, folder)
+        explorer = Explorer()
+        wall = time.monotonic()
+        result = explore(
+            world,
+            start,
+            args.seconds,
+            explorer,
+            MapPlanner(),
+            on_step=on_step,
+            laser=lasers[args.laser],
+        )
+    at = ", ".join(f"{m} s {c:.1%}" for m, c in sorted(marks.items()))
+    print(
+        f"{args.family}_{args.seed} {args.laser}: coverage {result.coverage:.1%} at "
+        f"{result.sim_time:.0f} s ({at}); travelled {result.travelled:.0f} m, "
+        f"{result.goals} goals, done {result.done}, {time.monotonic() - wall:.0f} s wall"
+    )
+
+
+if __name__ == "__main__":
+    main()

@@ -16,6 +16,25 @@ CAMERA_X = -0.087  # camera_depth_frame behind base_footprint (URDF)
 KINECT_FOV = math.radians(58)
 
 
+@dataclass(frozen=True)
+class Laser:
+    """A ray fan and what the mapper makes of it: `map_urange` clips the free space a beam
+    clears (gmapping's maxUrange), returns beyond `map_range` are dropped (maxRange)."""
+
+    fov: float = KINECT_FOV
+    beams: int = 80
+    range_max: float = 8.0
+    map_range: float = math.inf
+    map_urange: float = 8.0
+
+
+KINECT = Laser()
+# bench_slam_worlds' wide laser (270 deg, 30 m) under live SLAM's Turtlebot tuning
+# (maxRange 8 m, maxUrange 6 m), and under SLAM ranges that match it.
+WIDE_TURTLEBOT_SLAM = Laser(math.radians(270), 360, 30.0, 8.0, 6.0)
+WIDE = Laser(math.radians(270), 360, 30.0, 30.0, 30.0)
+
+
 def read_pgm(path):
     """A PGM as a uint8 array, row 0 = top of the image (map_server's reader)."""
     pixels, _ = pgm.read_pgm(path)
@@ -97,11 +116,13 @@ class Mapper:
         self.free = np.zeros(world.occupied.shape, dtype=bool)
         self.hit = np.zeros(world.occupied.shape, dtype=bool)
 
-    def integrate(self, x, y, yaw, angles, ranges, range_max=8.0):
-        """Add one scan taken at (x, y, yaw); NaN and -inf beams carry no information."""
+    def integrate(self, x, y, yaw, angles, ranges, range_max=8.0, max_range=math.inf):
+        """Add one scan taken at (x, y, yaw); NaN and -inf beams carry no information, nor
+        do returns beyond `max_range`; a beam clears free space up to `range_max`."""
         angles = np.asarray(angles, dtype=float)
         ranges = np.asarray(ranges, dtype=float)
         use = ~np.isnan(ranges) & ~np.isneginf(ranges)
+        use &= ~(np.isfinite(ranges) & (ranges > max_range))
         angles, ranges = angles[use], ranges[use]
         reach = np.where(np.isfinite(ranges), np.minimum(ranges, range_max), range_max)
         step = self.world.resolution / 2
@@ -110,7 +131,7 @@ class Mapper:
         along = t[None, :] < reach[:, None] - step
         rows, cols = self.world.cell(x + cos * t, y + sin * t)
         self._mark(self.free, rows[along], cols[along])
-        ends = np.isfinite(ranges)
+        ends = np.isfinite(ranges) & (ranges <= range_max + 1e-6)
         rows, cols = self.world.cell(
             x + cos[ends, 0] * ranges[ends], y + sin[ends, 0] * ranges[ends]
         )
@@ -148,8 +169,9 @@ class KinematicBase:
     scan integrated only after `update` = (metres, radians) of motion, as gmapping does)
     and differential-drive motion that the bumper stops at `robot_radius` from a wall."""
 
-    def __init__(self, world, start, robot_radius, update):
+    def __init__(self, world, start, robot_radius, update, laser=KINECT):
         self.world = world
+        self.laser = laser
         self.x, self.y, self.yaw = start
         self.robot_radius = robot_radius
         self.update = update
@@ -163,14 +185,19 @@ class KinematicBase:
         """(clearance ahead, whether the mapper integrated it) of one scan from here."""
         x, y, yaw = self.x, self.y, self.yaw
         sx, sy = x + CAMERA_X * math.cos(yaw), y + CAMERA_X * math.sin(yaw)
-        angles, ranges = cast_fan(self.world, sx, sy, yaw)
+        laser = self.laser
+        angles, ranges = cast_fan(
+            self.world, sx, sy, yaw, laser.fov, laser.beams, range_max=laser.range_max
+        )
         moved = math.hypot(x - self._last_update[0], y - self._last_update[1])
         turned = abs(math.remainder(yaw - self._last_update[2], 2 * math.pi))
         integrated = moved >= self.update[0] or turned >= self.update[1] or self._last_update[3]
         if integrated:
-            self.mapper.integrate(sx, sy, yaw, angles, ranges)
+            self.mapper.integrate(
+                sx, sy, yaw, angles, ranges, laser.map_urange, max_range=laser.map_range
+            )
             self._last_update = (x, y, yaw, False)
-        return _clearance(angles, ranges, self.robot_radius), integrated
+        return _clearance(angles, ranges, self.robot_radius, laser.range_max), integrated
 
     def drive(self, linear, angular, dt, explorer, now):
         """Move for `dt` at (linear, angular); into a wall, the base stays and the explorer
@@ -252,11 +279,13 @@ def explore(
     )
 
 
-def _clearance(angles, ranges, half_width):
+def _clearance(angles, ranges, half_width, range_max=8.0):
     from explorer.scan_safety import clearance_ahead
 
     increment = angles[1] - angles[0]
-    return clearance_ahead(ranges, angles[0], increment, 0.45, 8.0, half_width + 0.04, CAMERA_X)
+    return clearance_ahead(
+        ranges, angles[0], increment, 0.45, range_max, half_width + 0.04, CAMERA_X
+    )
 
 
 def _coverage(mapper, reachable):

@@ -124,3 +124,33 @@ def test_a_frontier_nobody_can_stand_on_is_still_looked_at_from_afar():
     again = planner.plan(5.0, 1.5, close_targets=[far.target])
     assert again is not None and not again.close
     assert again.goal == far.goal
+
+
+def pocket(gap):
+    """10 m x 6 m: the robot's room (x < 5, known all round) and, through a `gap` m
+    opening in a 0.3 m wall at x = 5, a room unknown beyond x = 8.5 (out of reach_max
+    from the robot's room)."""
+    rows, cols = int(6 / RES), int(10 / RES)
+    data = np.zeros((rows, cols), dtype=np.int8)
+    ys, xs = (np.mgrid[0:rows, 0:cols] + 0.5) * RES
+    data[:2, :] = data[-2:, :] = data[:, :2] = data[:, -2:] = 100
+    wall = (xs > 5.0) & (xs <= 5.3)
+    data[wall & (np.abs(ys - 3.0) > gap / 2)] = 100
+    data[xs > 8.5] = -1
+    return data
+
+
+def test_a_robot_in_a_pocket_only_the_safety_margin_closes_still_gets_out():
+    """The robot came in through a gap it fits (0.40 m for its 0.36 m body) which the
+    safety margin and the coarse grid's grown obstacles close: it plans through it rather
+    than finding no frontier. A closed wall still means none."""
+    planner = planner_on(pocket(0.40))
+    assert not planner.prepared.costmap.traversable[:, int(5.15 / 0.1)].any()
+    plan = planner.plan(2.0, 3.0)
+    assert plan is not None and plan.goal[0] > 5.3
+    assert np.all(np.abs(plan.path[plan.path[:, 0] > 5.0, 1] - 3.0) < 0.2)  # through the gap
+    assert planner.plan(2.0, 3.0, excluded_points=[plan.goal]) is not None
+    closed = planner_on(pocket(0.0))
+    assert closed.plan(2.0, 3.0) is None and not closed.start_blocked
+    # A gap the body does not fit stays closed too.
+    assert planner_on(pocket(0.25)).plan(2.0, 3.0) is None

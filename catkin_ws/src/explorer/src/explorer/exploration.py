@@ -67,6 +67,7 @@ class Explorer:
         self.follower = None
         self.plan = None
         self.goal_started = 0.0
+        self.goal_deadline = math.inf  # give up the goal (blacklist it) after this time
         self.last_plan_time = -math.inf
         self.plan_requested = False
         self.recovery = None
@@ -157,6 +158,12 @@ class Explorer:
                 f"{plan.frontiers_left} frontiers left{', close approach' if plan.close else ''}"
             )
             self.goal_started = now
+            # From the whole path's expected time, fixed for the goal: a kept plan's path
+            # is only what is left of it, and measured against the time since the start
+            # it gave up every long goal shortly before the robot got there.
+            expected = plan.cost / max(self.follower_params.max_linear, 1e-3)
+            p = self.params
+            self.goal_deadline = now + max(p.goal_timeout_min, p.goal_timeout_factor * expected)
             self.stuck.reset()
         self.plan = plan
         self.follower = PurePursuit(plan.path, self.follower_params)
@@ -274,7 +281,7 @@ class Explorer:
                     f"frontier at ({tx:.2f}, {ty:.2f}) looked at {visits + 1} times closely: "
                     "set aside"
                 )
-                self.dead_frontiers.add(tx, ty, now)
+                self._set_aside(tx, ty, now)
             else:
                 # From afar the view may graze along a shadow's edge: go up to it.
                 self.events.append(
@@ -283,6 +290,21 @@ class Explorer:
                 )
                 self._approach_closely(tx, ty, now)
         self.reached.append((tx, ty, now, close))
+
+    def _set_aside(self, tx, ty, now):
+        """Set aside the frontier cells this goal was chosen for: around each of them, not
+        only around their mean (the target), which may lie blacklist_radius from all of
+        them when they are spread out; then the planner would choose them again and again."""
+        points = getattr(self.plan, "seen_points", None)
+        if points is None or not len(points):
+            points = [(tx, ty)]
+        radius = self.dead_frontiers.radius
+        active = self.dead_frontiers.active(now)
+        for x, y in points:
+            # One entry per blacklist_radius is enough.
+            if all(math.hypot(x - dx, y - dy) >= radius / 2 for dx, dy in active):
+                self.dead_frontiers.add(float(x), float(y), now)
+                active.append((x, y))
 
     def _approach_closely(self, x, y, now):
         radius = self.close_targets.radius
@@ -306,9 +328,7 @@ class Explorer:
             self.look_queue = headings
             self.state = LOOK
             return self._look(now, x, y, yaw)
-        expected = self.plan.cost / max(self.follower_params.max_linear, 1e-3)
-        limit = max(p.goal_timeout_min, p.goal_timeout_factor * expected)
-        if now - self.goal_started > limit:
+        if now > self.goal_deadline:
             self.events.append(f"goal timed out after {now - self.goal_started:.0f} s: blacklisted")
             self.blacklist.add(*self.plan.goal, now)
             self._request_plan(WAIT)

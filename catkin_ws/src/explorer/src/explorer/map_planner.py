@@ -6,7 +6,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .costmap import inflate
+from .costmap import Costmap, inflate
 from .frontiers import find_frontiers, information_gain
 from .grid import FREE, UNKNOWN, GridGeometry, classify, downsample, known_window
 from .planner import approach_labels, choose_goal, distance_field, extract_path
@@ -55,6 +55,11 @@ class PlannerParams:
     view_range: float = 4.0  # m: frontier cells this near a view count as seen
     view_half_angle: float = 0.45  # rad: within this bearing of a view's heading
     look_wiggle: float = 0.5  # rad: turn at least this much while looking at a frontier
+    # rad: SLAM maps a scan only after the robot turned this much (angularUpdate of
+    # gmapping_lite's Turtlebot tuning, 0.436 rad), at a phase the explorer does not know:
+    # a look reaches this far past the view that just covers its frontier at each end, so
+    # that mapped scans cover all of it (0: the map takes in every scan).
+    map_angular_update: float = 0.436
     switch_margin: float = 1.0  # m: keep the current goal unless another scores this much better
     blacklist_radius: float = 0.8  # m
     free_threshold: int = 25
@@ -73,6 +78,8 @@ class Plan:
     kept: bool = False  # the previous goal was kept
     target: tuple = (0.0, 0.0)  # (x, y): middle of the frontier cells seen from the goal
     close: bool = False  # a close approach: the goal stands at the frontier (see plan())
+    # (K, 2) x, y of the frontier cells seen from the goal (their mean is `target`)
+    seen_points: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
 
 
 @dataclass
@@ -83,6 +90,10 @@ class PreparedMap:
     labels: np.ndarray
     frontiers: list = field(default_factory=list)
     near: np.ndarray = None  # approach_labels of all frontiers (once per map)
+    # Cells the robot's body may fit on (without the safety margin, and allowing for the
+    # coarse grid's grown obstacles): where plan() looks when nothing is reachable on
+    # `costmap`.
+    tight: object = None
 
 
 class MapPlanner:
@@ -124,7 +135,14 @@ class MapPlanner:
             labels[np.isin(labels, dropped)] = 0
             frontiers = [f for f in frontiers if f.label not in dropped]
         near = approach_labels(labels, coarse, geometry.resolution, p.reach_max)
-        self.prepared = PreparedMap(geometry, coarse, costmap, labels, frontiers, near)
+        # The coarse grid makes a block occupied if any of its cells is: obstacles grow by
+        # up to (factor - 1) map cells, so the body may fit where the coarse clearance
+        # exceeds its radius less that.
+        body = p.robot_radius - (factor - 1) * resolution
+        tight = Costmap(
+            (coarse == FREE) & (costmap.clearance > body), costmap.cost, costmap.clearance
+        )
+        self.prepared = PreparedMap(geometry, coarse, costmap, labels, frontiers, near, tight)
         return True
 
     @property
@@ -152,6 +170,7 @@ class MapPlanner:
         views=(),
         dead_frontiers=(),
         close_targets=(),
+        tight=False,
     ):
         """Plan from (x, y) to the best frontier; None if no frontier is reachable.
 
@@ -164,7 +183,10 @@ class MapPlanner:
         view along a shadow's edge, an occluded corner): it is approached closely instead,
         from a goal on the frontier, and the look turns towards the unknown cells behind
         it rather than towards the frontier cells. `start_blocked` tells afterwards
-        whether None meant no traversable cell near the robot."""
+        whether None meant no traversable cell near the robot. With nothing reachable, it
+        plans once more over the cells the robot's body may fit on (`tight`: without the
+        safety margin and the coarse grid's growth of obstacles): the robot may stand in a
+        pocket that only those close."""
         self.start_blocked = False
         prep = self.prepared
         if prep is None or not prep.frontiers:
@@ -178,7 +200,8 @@ class MapPlanner:
         far_labels, far, close_labels, close = self._split(labels, frontiers, close_targets)
         start = tuple(int(v) for v in g.to_cell(x, y))
         snap = int(math.ceil(0.5 / g.resolution))
-        dist = distance_field(prep.costmap, start, g.resolution, snap_cells=snap)
+        costmap = prep.tight if tight else prep.costmap
+        dist = distance_field(costmap, start, g.resolution, snap_cells=snap)
         if dist is None:
             self.start_blocked = True
             return None
@@ -243,6 +266,21 @@ class MapPlanner:
 
         chosen = choose(excluded)
         if chosen is None:
+            if not tight:
+                # The way out of where the robot stands may be closed by the safety margin
+                # and the coarse grid alone (it came in that way: pure pursuit cuts
+                # corners, the map grew a wall beside the gap); try where the body may fit,
+                # at the highest inflation cost. Nothing there either: none left.
+                return self.plan(
+                    x,
+                    y,
+                    excluded_points,
+                    current_goal,
+                    views,
+                    dead_frontiers,
+                    close_targets,
+                    tight=True,
+                )
             return None
         kept = False
         if current_goal is not None:
@@ -255,6 +293,7 @@ class MapPlanner:
         path = np.vstack([[x, y], np.column_stack([xs, ys])])
         gx, gy = g.to_world(*best.cell)
         tx, ty = g.to_world(best.seen[:, 0].mean(), best.seen[:, 1].mean())
+        seen_points = np.column_stack(g.to_world(best.seen[:, 0], best.seen[:, 1]))
         return Plan(
             (float(gx), float(gy)),
             path,
@@ -266,6 +305,7 @@ class MapPlanner:
             kept,
             (float(tx), float(ty)),
             is_close,
+            seen_points.reshape(-1, 2),
         )
 
     def _unseen(self, labels, frontiers, views):
@@ -345,7 +385,8 @@ class MapPlanner:
         sx, sy = self.prepared.geometry.to_world(cells[:, 0], cells[:, 1])
         bearings = np.arctan2(sy - gy, sx - gx)
         p = self.params
-        headings = sweep_headings(bearings, p.view_half_angle, 2 * p.view_half_angle)
+        h = p.view_half_angle
+        headings = sweep_headings(bearings, h, 2 * h, p.map_angular_update, p.look_wiggle)
         if len(headings) == 1 and p.look_wiggle > 0:
             # Turn across the heading: SLAM integrates a scan only after the robot turned
             # angularUpdate (0.436 rad in the Turtlebot tuning), so a look that turns
