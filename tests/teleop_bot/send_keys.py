@@ -10,11 +10,13 @@ queue_size=1 publisher has no reason to drop one."""
 import sys
 import time
 import warnings
-import xmlrpc.client
+from pathlib import Path
 
-import rosgraph
 import rospy
 from std_msgs.msg import String
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+from delivery import a_publisher_sends_to_us  # noqa: E402
 
 
 def waited(condition, seconds=60.0, interval=0.01):
@@ -25,28 +27,6 @@ def waited(condition, seconds=60.0, interval=0.01):
             return False
         time.sleep(interval)
     return True
-
-
-def publishers_send_to_us(sub):
-    """Whether every publisher of `sub`'s topic has us in its own list of connections. Our
-    side counts a connection once the publisher's header arrives, which rospy's publisher
-    sends before it adds the connection to those it publishes to: a message in between is
-    lost (a Twist answering the first key was)."""
-    if sub.get_num_connections() == 0:
-        return False
-    me = rospy.get_name()
-    master = rosgraph.Master(me)
-    publishers = [nodes for topic, nodes in master.getSystemState()[0] if topic == sub.name]
-    for node in publishers[0] if publishers else []:
-        try:
-            code, _, info = xmlrpc.client.ServerProxy(master.lookupNode(node)).getBusInfo(me)
-        except (OSError, rosgraph.MasterError):
-            return False  # a publisher going away or not up yet: ask again
-        if code != 1 or not any(
-            row[1] == me and row[2] == "o" and row[4] == sub.name for row in info
-        ):
-            return False
-    return bool(publishers)
 
 
 def main():
@@ -70,7 +50,7 @@ def main():
         pub = rospy.Publisher("keys", String)
 
     def connected():
-        return pub.get_num_connections() > 0 and (not ack_topic or publishers_send_to_us(ack))
+        return pub.get_num_connections() > 0 and (not ack_topic or a_publisher_sends_to_us(ack))
 
     if not waited(connected, interval=0.02):
         missing = f"nobody subscribes to keys (or publishes {ack_topic})"

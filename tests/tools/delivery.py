@@ -15,6 +15,31 @@ import rosgraph
 import rospy
 
 
+def a_publisher_sends_to_us(sub):
+    """Whether a publisher of `sub`'s topic has us in its own list of connections (as its
+    node's getBusInfo says). Our side counts a connection once the publisher's header arrives,
+    which rospy's publisher sends before it adds the connection to those it publishes to: a
+    message published in between is lost (a Twist answering a test's first key was).
+    Publishers that do not answer (a killed node's registration) are passed over."""
+    if sub.get_num_connections() == 0:
+        return False
+    me = rospy.get_name()
+    master = rosgraph.Master(me)
+    for topic, nodes in master.getSystemState()[0]:
+        if topic != sub.name:
+            continue
+        for node in nodes:
+            try:
+                code, _, info = ServerProxy(master.lookupNode(node)).getBusInfo(me)
+            except (OSError, rosgraph.MasterError):
+                continue
+            if code == 1 and any(
+                row[1] == me and row[2] == "o" and row[4] == sub.name for row in info
+            ):
+                return True
+    return False
+
+
 class Delivery:
     """Counts, per subscriber of `pub`, messages written (here) and received (there)."""
 

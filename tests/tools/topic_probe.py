@@ -18,6 +18,7 @@ import genpy
 import roslib.message
 import rospy
 import rostopic
+from delivery import a_publisher_sends_to_us
 
 
 def to_plain(value):
@@ -91,8 +92,8 @@ def main():
                     return 3
                 time.sleep(0.05)
         subscribers.append(rospy.Subscriber(real_topic, msg_class, callback, topic))
-    # Wait until each subscriber has a connection so nothing published next is missed.
-    while any(s.get_num_connections() == 0 for s in subscribers):
+    # Wait until a publisher of each topic has added us, so nothing published next is missed.
+    while not all(a_publisher_sends_to_us(s) for s in subscribers):
         if time.monotonic() > deadline:
             break
         time.sleep(0.02)
