@@ -32,24 +32,6 @@ def free_port():
 
 
 @functools.lru_cache(maxsize=None)
-def _find_rosout(prefix_path):
-    found = subprocess.run(
-        ["catkin_find", "--libexec", "rosout", "rosout"],
-        capture_output=True,
-        text=True,
-        check=True,
-        env={**os.environ, "CMAKE_PREFIX_PATH": prefix_path},
-    ).stdout.split()
-    return found[0]
-
-
-def _rosout_binary(env):
-    """rosout's executable, found once per worker and workspace: `rosrun rosout rosout` would
-    run catkin_find for every test's master (a sixth of a CPU second and half a second each)."""
-    return _find_rosout(env.get("CMAKE_PREFIX_PATH", ""))
-
-
-@functools.lru_cache(maxsize=None)
 def _rosrun_target(package, executable, prefix_path, package_path):
     """The file `rosrun PACKAGE EXECUTABLE` runs, asked of rosrun itself (`--prefix echo`
     prints it instead of running it), or None where rosrun finds no single file."""
@@ -141,7 +123,8 @@ class RosGraph:
         self.core = self.start(cmd, name="rosmaster")
         self.wait_for_master(until=lambda master: master.getPid(CALLER_ID)[0] == 1)
         self.master().setParam(CALLER_ID, "/run_id", str(uuid.uuid1()))
-        rosout = self.start([_rosout_binary(self.env), "__name:=rosout"], name="rosout")
+        # start() runs the file rosrun resolves, found once per worker (without_rosrun).
+        rosout = self.start(["rosrun", "rosout", "rosout", "__name:=rosout"], name="rosout")
         # Up before the test goes on, as a test expects of roscore: else rosout could read a
         # /use_sim_time the test sets and add itself to /clock's subscribers.
         self.wait_for_master(
