@@ -19,8 +19,11 @@ if [ ${#missing[@]} -gt 0 ]; then
   sudo_cmd=""
   [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
   export DEBIAN_FRONTEND=noninteractive
-  $sudo_cmd apt-get update -qq
-  $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  # Wait for another apt (a fresh machine's unattended upgrades, a second checkout's set-up)
+  # rather than failing on its lock.
+  wait_for_lock=(-o DPkg::Lock::Timeout=900)
+  $sudo_cmd apt-get "${wait_for_lock[@]}" update -qq
+  $sudo_cmd apt-get "${wait_for_lock[@]}" install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
 exec "$here/scripts/build.sh"
