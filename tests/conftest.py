@@ -2,13 +2,18 @@
 
 import os
 import sys
+import tempfile
 from pathlib import Path
 
 import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from roskit import RosGraph  # noqa: E402
+from roskit import SHARED_ROSRUN_ANSWERS, RosGraph  # noqa: E402
+
+if SHARED_ROSRUN_ANSWERS not in os.environ:  # the controller: its workers inherit the folder
+    _rosrun_answers = tempfile.TemporaryDirectory(prefix="roskit-rosrun-")
+    os.environ[SHARED_ROSRUN_ANSWERS] = _rosrun_answers.name
 
 # The tests are headless: the simulator launch files open rviz where $DISPLAY is set. Tests
 # that need a window make their own display (xvfb-run) and set it for what they start.

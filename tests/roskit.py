@@ -6,6 +6,7 @@ graph is closed, so a failing test leaves nothing running.
 """
 
 import functools
+import hashlib
 import json
 import os
 import signal
@@ -31,10 +32,22 @@ def free_port():
         return sock.getsockname()[1]
 
 
+# The xdist workers share what rosrun answered through files in this folder (set by the first
+# process that imports roskit, the controller, and inherited by the workers it starts).
+SHARED_ROSRUN_ANSWERS = "ROSKIT_ROSRUN_ANSWERS"
+
+
 @functools.lru_cache(maxsize=None)
 def _rosrun_target(package, executable, prefix_path, package_path):
     """The file `rosrun PACKAGE EXECUTABLE` runs, asked of rosrun itself (`--prefix echo`
-    prints it instead of running it), or None where rosrun finds no single file."""
+    prints it instead of running it), or None where rosrun finds no single file. One worker
+    asks; the others read its answer."""
+    answers = os.environ.get(SHARED_ROSRUN_ANSWERS)
+    key = hashlib.sha1("\0".join((package, executable, prefix_path, package_path)).encode())
+    answer = Path(answers, key.hexdigest()) if answers and os.path.isdir(answers) else None
+    if answer is not None and answer.exists():
+        path = answer.read_text()
+        return path if _runnable(path) else None
     found = subprocess.run(
         ["rosrun", "--prefix", "echo", package, executable],
         capture_output=True,
@@ -42,10 +55,16 @@ def _rosrun_target(package, executable, prefix_path, package_path):
         stdin=subprocess.DEVNULL,
         env={**os.environ, "CMAKE_PREFIX_PATH": prefix_path, "ROS_PACKAGE_PATH": package_path},
     )
-    path = found.stdout.strip()
-    if found.returncode != 0 or not os.path.isfile(path) or not os.access(path, os.X_OK):
-        return None
-    return path
+    path = found.stdout.strip() if found.returncode == 0 else ""
+    if answer is not None:
+        partial = answer.with_name(f"{answer.name}.{os.getpid()}")
+        partial.write_text(path)
+        os.replace(partial, answer)  # readers see a whole answer or none
+    return path if _runnable(path) else None
+
+
+def _runnable(path):
+    return bool(path) and os.path.isfile(path) and os.access(path, os.X_OK)
 
 
 def without_rosrun(cmd, env):

@@ -30,6 +30,12 @@ def to_plain(value):
     if isinstance(value, bytes):
         return list(value)
     if isinstance(value, (list, tuple)):
+        # A received array holds one type: numbers (a map's millions of cells) skip the walk.
+        first = type(value[0]) if value else None
+        if first is int or first is bool:
+            return list(value)
+        if first is float:
+            return [v if math.isfinite(v) else str(v) for v in value]
         return [to_plain(v) for v in value]
     if isinstance(value, float) and not math.isfinite(value):
         return str(value)  # JSON has no NaN/inf; keep them readable
