@@ -136,7 +136,7 @@ def no_plan(explorer, t, known_area=None):
 
 
 def test_a_frontier_looked_at_twice_is_approached_closely_then_set_aside():
-    explorer = Explorer()
+    explorer = Explorer(ExplorerParams(max_visits=2))
     t = spun(explorer)
     for _ in range(2):
         t = look_at(explorer, t)
@@ -150,6 +150,19 @@ def test_a_frontier_looked_at_twice_is_approached_closely_then_set_aside():
     assert not explorer.done
     # Set aside until nothing else is left: not after the blacklist timeout.
     assert explorer.excluded_frontiers(t + 10 * explorer.params.blacklist_timeout)
+
+
+def test_by_default_one_look_from_afar_then_one_from_close_by_then_set_aside():
+    """A look sweeps its frontier and map_angular_update beyond both ends, so each part
+    of it reaches the map: a second look from a like place would see the same again."""
+    explorer = Explorer()
+    t = spun(explorer)
+    t = look_at(explorer, t)
+    assert explorer.plan_inputs(t, t)["close_targets"] == [(3.0, 0.0)]
+    assert explorer.excluded_frontiers(t) == []
+    t = look_at(explorer, t, close=True)
+    assert explorer.excluded_frontiers(t) == [(3.0, 0.0)]
+    assert not explorer.done
 
 
 def test_a_frontier_to_approach_closely_but_looked_at_from_afar_is_set_aside_too():

@@ -71,6 +71,29 @@ def test_turn_towards_takes_the_short_way_and_stops():
     assert turn_towards(1.0, 1.05) == (0.0, True)
 
 
+def test_a_sweep_passes_its_inner_headings_at_full_rate():
+    params = FollowerParams()
+    slowing, _ = turn_towards(0.0, 0.2, params)
+    passing, done = turn_towards(0.0, 0.2, params, passing=True)
+    assert not done and passing == pytest.approx(params.max_angular) and slowing < passing
+    assert turn_towards(0.0, -0.2, params, passing=True)[0] == pytest.approx(-params.max_angular)
+    assert turn_towards(0.0, 0.05, params, passing=True) == (0.0, True)
+
+
+def test_speed_is_bounded_by_the_turning_rate_not_by_the_heading_error():
+    """A moderate heading error on a gentle arc keeps full speed; a sharp arc is slowed to
+    max_angular over its curvature (heading_slowdown 0, the default)."""
+    path = np.column_stack([np.linspace(0, 3, 31), np.full(31, 0.2)])
+    params = FollowerParams()
+    v, w, _ = PurePursuit(path, params).command(0.0, 0.0, 0.0)
+    assert v == pytest.approx(params.max_linear) and 0 < w <= params.max_angular
+    v, w, _ = PurePursuit(path, FollowerParams(heading_slowdown=0.5)).command(0.0, 0.0, 0.0)
+    assert v < params.max_linear  # the old rule gives up speed for the same error
+    sharp = np.column_stack([np.full(31, 0.1), np.linspace(0, 3, 31)])
+    v, w, _ = PurePursuit(sharp, params).command(0.0, 0.0, 0.3)
+    assert w == pytest.approx(params.max_angular) and v < params.max_linear
+
+
 def test_empty_path_is_refused():
     with pytest.raises(ValueError):
         PurePursuit([])

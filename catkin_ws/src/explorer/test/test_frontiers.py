@@ -1,6 +1,12 @@
 import numpy as np
 import pytest
-from explorer.frontiers import find_frontiers, frontier_mask, information_gain, spread_labels
+from explorer.frontiers import (
+    closed_gaps,
+    find_frontiers,
+    frontier_mask,
+    information_gain,
+    spread_labels,
+)
 from explorer.grid import FREE, OCCUPIED, UNKNOWN
 
 
@@ -60,3 +66,39 @@ def test_gain_counts_unknown_space_behind_the_frontier():
     information_gain(classes, labels, frontiers, steps=3)
     gains = sorted(f.gain for f in frontiers)
     assert gains[-1] > gains[0] > 0
+
+
+def test_closed_gaps_closes_what_the_robot_cannot_pass_and_keeps_doors():
+    classes = np.full((12, 30), FREE, dtype=np.uint8)
+    classes[5, :] = OCCUPIED  # a wall, 0.1 m cells ...
+    classes[5, 3:5] = FREE  # ... with a 0.2 m gap (narrower than a 0.36 m robot)
+    classes[5, 15:24] = FREE  # and a 0.9 m door
+    closed = closed_gaps(classes, 0.1, 0.36)
+    assert closed[5, 3:5].all()
+    assert not closed[5, 15:24].any()
+    assert closed[classes == OCCUPIED].all()
+    assert not closed_gaps(classes, 0.1, 0.0)[5, 3:5].any()
+
+
+def test_gain_leaves_out_unknown_space_behind_a_face_mapped_with_gaps():
+    """A box's face seen with gaps (cells no beam ended on) lets its unknown inside touch
+    the free space: without the closed gaps it counts as gain, though no view enters it."""
+    classes = np.full((30, 30), FREE, dtype=np.uint8)
+    classes[10:20, 10:20] = UNKNOWN  # the inside of a box ...
+    classes[9, 9:21] = OCCUPIED  # ... whose near face the scan mapped ...
+    classes[9, 12] = classes[9, 16] = UNKNOWN  # ... with two one-cell gaps no beam ended in
+    classes[10:20, 9] = OCCUPIED
+    classes[10:20, 20] = OCCUPIED
+    classes[20, 9:21] = OCCUPIED
+    labels, frontiers = find_frontiers(classes)
+    assert frontiers
+    information_gain(classes, labels, frontiers, steps=30)
+    assert sum(f.gain for f in frontiers) >= 50
+    blocked = closed_gaps(classes, 0.1, 0.36)
+    information_gain(classes, labels, frontiers, steps=30, blocked=blocked)
+    assert all(f.gain == 0 for f in frontiers)
+    # A doorway wide enough to drive through keeps its gain.
+    classes[9, 12:18] = FREE
+    labels, frontiers = find_frontiers(classes)
+    information_gain(classes, labels, frontiers, 30, closed_gaps(classes, 0.1, 0.36))
+    assert max(f.gain for f in frontiers) >= 50

@@ -38,7 +38,10 @@ class ExplorerParams:
     goal_timeout_factor: float = 3.0  # give up a goal after this x its expected time
     goal_timeout_min: float = 20.0  # s
     done_after: int = 2  # consecutive plans without a frontier before declaring done
-    max_visits: int = 2  # looks at the same frontier (in blacklist_timeout) before escalating
+    # Looks at the same frontier (in blacklist_timeout) before escalating. One: a look
+    # sweeps its frontier and map_angular_update beyond both ends (see map_planner), so
+    # every part of it reaches the map; another look from a like place sees the same.
+    max_visits: int = 1
 
 
 class Explorer:
@@ -247,7 +250,12 @@ class Explorer:
     def _look(self, now, x, y, yaw):
         """Turn through the queued headings, noting each view; then ask for a plan."""
         while self.look_queue:
-            angular, finished = turn_towards(yaw, self.look_queue[0], self.follower_params)
+            # Through the headings before the last at full rate: a sweep need not stop
+            # at each of them (the scans go on as it turns).
+            passing = len(self.look_queue) > 1
+            angular, finished = turn_towards(
+                yaw, self.look_queue[0], self.follower_params, passing=passing
+            )
             if not finished:
                 return 0.0, angular
             self.views.append((x, y, yaw, now))

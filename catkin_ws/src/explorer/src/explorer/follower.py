@@ -22,6 +22,10 @@ class FollowerParams:
     heading_gain: float = 2.0  # rad/s per rad when turning in place
     goal_slowdown: float = 0.8  # m/s per metre to the goal
     min_linear: float = 0.05  # m/s: the slowest useful forward speed
+    # Share of max_linear given up at rotate_threshold (linearly in the heading error).
+    # 0: none; the speed is then bounded by the turning rate alone (max_angular over the
+    # pure-pursuit arc's curvature), which already slows the sharp turns.
+    heading_slowdown: float = 0.0
 
 
 class PurePursuit:
@@ -66,7 +70,7 @@ class PurePursuit:
             return 0.0, _turn(alpha, p), False
         distance = max(math.hypot(tx - x, ty - y), 1e-3)
         curvature = 2.0 * math.sin(alpha) / distance
-        linear = p.max_linear * (1.0 - 0.5 * abs(alpha) / p.rotate_threshold)
+        linear = p.max_linear * (1.0 - p.heading_slowdown * abs(alpha) / p.rotate_threshold)
         linear = min(linear, p.min_linear + p.goal_slowdown * self.distance_to_goal(x, y))
         linear = min(linear, max(0.0, clearance))
         angular = linear * curvature
@@ -84,10 +88,14 @@ def _turn(error, params):
     return math.copysign(rate, error)
 
 
-def turn_towards(yaw, target_yaw, params=None, tolerance=0.1):
-    """(angular, done) to turn in place to `target_yaw`."""
+def turn_towards(yaw, target_yaw, params=None, tolerance=0.1, passing=False):
+    """(angular, done) to turn in place to `target_yaw`. `passing`: the turn goes on
+    beyond it in the same direction (a sweep through several headings), so it keeps the
+    full turning rate instead of slowing down to stop there."""
     params = params or FollowerParams()
     error = wrap(target_yaw - yaw)
     if abs(error) <= tolerance:
         return 0.0, True
+    if passing:
+        return math.copysign(params.max_angular, error), False
     return _turn(error, params), False

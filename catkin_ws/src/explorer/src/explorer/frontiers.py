@@ -5,7 +5,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import ndimage
 
-from .grid import FREE, UNKNOWN
+from .grid import FREE, OCCUPIED, UNKNOWN
 
 EIGHT = np.ones((3, 3), dtype=bool)
 
@@ -75,14 +75,31 @@ def spread_labels(labels, through, steps):
     return spread, distance
 
 
-def information_gain(classes, labels, frontiers, steps):
+def closed_gaps(classes, resolution, width):
+    """OCCUPIED cells with every gap between them narrower than `width` metres closed
+    (a morphological closing by a disc of width / 2): a body that wide cannot pass such a
+    gap, and a scan that left a few cells of an obstacle's face unmarked lets its unknown
+    inside touch the free space through one."""
+    occupied = classes == OCCUPIED
+    radius = width / 2
+    if not occupied.any() or radius <= 0:
+        return occupied
+    grown = ndimage.distance_transform_edt(~occupied) * resolution <= radius
+    return grown & (ndimage.distance_transform_edt(grown) * resolution > radius)
+
+
+def information_gain(classes, labels, frontiers, steps, blocked=None):
     """Set each frontier's `gain`: the unknown cells within `steps` of it, counted through
     unknown space only (known walls bound it), so a doorway onto a room scores more than
-    a sliver of unseen floor behind a desk."""
+    a sliver of unseen floor behind a desk. `blocked`: cells the count does not pass
+    either (closed_gaps: the inside of furniture, behind a face the scan left gaps in)."""
     if not frontiers:
         return
-    spread, _ = spread_labels(labels, classes == UNKNOWN, steps)
+    through = classes == UNKNOWN
+    if blocked is not None:
+        through &= ~blocked
+    spread, _ = spread_labels(labels, through, steps)
     index = [f.label for f in frontiers]
-    counts = ndimage.sum_labels(classes == UNKNOWN, spread, index)
+    counts = ndimage.sum_labels(through, spread, index)
     for frontier, count in zip(frontiers, counts, strict=True):
         frontier.gain = int(count)

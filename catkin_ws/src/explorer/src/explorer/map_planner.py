@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .costmap import Costmap, inflate
-from .frontiers import find_frontiers, information_gain
+from .frontiers import closed_gaps, find_frontiers, information_gain
 from .grid import FREE, UNKNOWN, GridGeometry, classify, downsample, known_window
 from .planner import approach_labels, choose_goal, distance_field, extract_path
 from .visibility import line_of_sight, sweep_headings
@@ -129,7 +129,13 @@ class MapPlanner:
         min_cells = max(1, int(math.ceil(p.min_frontier_size / geometry.resolution)))
         labels, frontiers = find_frontiers(coarse, min_cells)
         cell_area = geometry.resolution**2
-        information_gain(coarse, labels, frontiers, int(round(p.info_radius / geometry.resolution)))
+        # Unknown space the robot's body cannot reach (beyond gaps narrower than its
+        # diameter: the inside of furniture whose face the scan mapped with gaps, the
+        # space behind a bed against a wall) is no gain: frontiers opening only onto it
+        # attract goals that no look ever clears.
+        blocked = closed_gaps(coarse, geometry.resolution, 2 * p.robot_radius)
+        steps = int(round(p.info_radius / geometry.resolution))
+        information_gain(coarse, labels, frontiers, steps, blocked)
         dropped = [f.label for f in frontiers if f.gain * cell_area < p.min_gain]
         if dropped:
             labels[np.isin(labels, dropped)] = 0
