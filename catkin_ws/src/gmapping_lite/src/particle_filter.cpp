@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <numeric>
+#include <string>
 
 namespace gmapping_lite {
 
@@ -17,6 +19,7 @@ MatcherParams withMapResolution(MatcherParams m, double delta) {
 
 ParticleFilter::ParticleFilter(const SlamParams& params)
     : params_(params),
+      kalman_(std::getenv("GML_K") && std::string(std::getenv("GML_K")) == "1"),
       motion_(params.motion),
       matcher_(withMapResolution(params.matcher, params.delta)),
       local_matcher_(withMapResolution(params.matcher, params.delta)),
@@ -236,6 +239,7 @@ void ParticleFilter::closeLoop(const std::vector<const TrajectoryNode*>& chain,
     p.trajectory = last;
     p.log_weight = p.weight_sum = 0.0;
     p.drift_xy2 = p.drift_theta2 = 0.0;
+    p.covariance = Covariance();
   }
   report->map_rebuilt = true;
 }
@@ -300,11 +304,18 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
     // The prior: this increment's spread plus what odometry may have drifted since a scan
     // last placed the particle (variances add).
     const Pose2 predicted = p.pose * inc;
-    const OdometryPrior prior{std::sqrt(increment_prior.sigma_xy * increment_prior.sigma_xy +
-                                        p.drift_xy2),
-                              std::sqrt(increment_prior.sigma_theta *
-                                            increment_prior.sigma_theta +
-                                        p.drift_theta2)};
+    OdometryPrior prior{std::sqrt(increment_prior.sigma_xy * increment_prior.sigma_xy +
+                                  p.drift_xy2),
+                        std::sqrt(increment_prior.sigma_theta * increment_prior.sigma_theta +
+                                  p.drift_theta2)};
+    Covariance predicted_covariance;
+    if (kalman_) {
+      predicted_covariance =
+          propagate(p.covariance, p.pose, inc, increment_prior.sigma_xy * increment_prior.sigma_xy,
+                    increment_prior.sigma_theta * increment_prior.sigma_theta);
+      prior = {std::sqrt(predicted_covariance.varXY()),
+               std::sqrt(predicted_covariance.varTheta())};
+    }
     // gmapping's proposal: the match climbs from a sample of the motion model.
     const Pose2 sample = motion_.sample(p.pose, last_odom_, odom, rng_);
     matcher_.prepare(p.map, sample, points);
@@ -314,7 +325,12 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
         points.points.size() >= 3)
       score = rescue(p.map, predicted, points, prior, score, &corrected);
     if (score > params_.minimum_score) {
-      p.pose = corrected;
+      if (kalman_) {
+        p.pose = fuse(predicted, predicted_covariance, corrected,
+                      matcher_.calibratedInformation(corrected, points), &p.covariance);
+      } else {
+        p.pose = corrected;
+      }
       p.drift_xy2 = p.drift_theta2 = 0.0;
       p.placed = true;
     } else {
@@ -322,6 +338,7 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
       // would tell the samples apart), and the spread is carried to the next match.
       ++report.failed_matches;
       p.pose = predicted;
+      p.covariance = predicted_covariance;
       p.drift_xy2 = prior.sigma_xy * prior.sigma_xy;
       p.drift_theta2 = prior.sigma_theta * prior.sigma_theta;
       // Its scan is drawn if the pose is known to a cell at the scan's typical range, or if
