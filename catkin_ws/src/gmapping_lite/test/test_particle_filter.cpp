@@ -125,7 +125,7 @@ TEST(ParticleFilter, ParticlesShareMapMemory) {
 }
 
 TEST(ParticleFilter, CarriedCovarianceShrinksOnMatchesAndGrowsWithoutThem) {
-  setenv("GML_K", "1", 1);  // screening switch
+  setenv("GML_K", "4", 1);  // screening switch
   const SyntheticWorld world = SyntheticWorld::office();
   RunOptions options;
   const SyntheticRun run = simulateRun(world, officeTour(), options);
@@ -161,15 +161,36 @@ TEST(ParticleFilter, CarriedCovarianceShrinksOnMatchesAndGrowsWithoutThem) {
     ++updates;
     EXPECT_GT(smallest(), last);
     last = smallest();
-    // Each particle's step is odometry's increment since the last update.
+    // Each particle's step is odometry's increment since the last update (scaled by the
+    // particle's estimate of odometry's scales, which nothing corrects here).
     const Pose2 inc = run.steps[i].odom.relativeTo(last_odom);
     for (const auto& p : filter.particles()) {
-      EXPECT_NEAR(p.trajectory->step.x, inc.x, 1e-9);
-      EXPECT_NEAR(p.trajectory->step.y, inc.y, 1e-9);
-      EXPECT_NEAR(p.trajectory->step.theta, inc.theta, 1e-9);
+      EXPECT_NEAR(p.trajectory->step.x, p.scale.distance * inc.x, 1e-9);
+      EXPECT_NEAR(p.trajectory->step.y, p.scale.distance * inc.y, 1e-9);
+      EXPECT_NEAR(p.trajectory->step.theta, p.scale.rotation * inc.theta, 1e-9);
     }
     last_odom = run.steps[i].odom;
   }
   EXPECT_EQ(updates, 5);
+  unsetenv("GML_K");
+}
+
+TEST(ParticleFilter, LearnsOdometrysScaleFactors) {
+  // A base whose odometry overstates distance by 3 % and turns by 5 % (a wheel radius and a
+  // track width off): the matches' corrections, through each particle's covariance of pose and
+  // scales, estimate both, and the trajectory stays on the truth.
+  setenv("GML_K", "4", 1);  // screening switch
+  const SyntheticWorld world = SyntheticWorld::office();
+  RunOptions options;
+  options.odom_scale_linear = 0.03;
+  options.odom_scale_angular = 0.05;
+  const SyntheticRun run = simulateRun(world, officeTour(), options);
+  ParticleFilter filter(turtlebotParams());
+  for (const auto& step : run.steps) filter.addScan(step.odom, step.stamp, run.laser, step.ranges);
+  const OdometryScale& scale = filter.best().scale;
+  std::printf("learnt scales: distance %.4f (truth %.4f), rotation %.4f (truth %.4f)\n",
+              scale.distance, 1.0 / 1.03, scale.rotation, 1.0 / 1.05);
+  EXPECT_NEAR(scale.distance, 1.0 / 1.03, 0.01);
+  EXPECT_NEAR(scale.rotation, 1.0 / 1.05, 0.01);
   unsetenv("GML_K");
 }

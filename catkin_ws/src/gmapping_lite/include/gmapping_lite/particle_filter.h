@@ -30,6 +30,7 @@ struct Particle {
   // The pose's covariance relative to the particle's own map, carried from update to update
   // (world frame): the prediction's prior is this plus the increment's motion-model spread.
   Covariance covariance;
+  OdometryScale scale;  // odometry's scale factors as this particle has estimated them
   Information information;  // of the pose the last match gave (world frame)
   bool placed = true;       // the last scan's pose was known well enough to draw it
 };
@@ -87,7 +88,7 @@ class ParticleFilter {
                 const OdometryPrior& prior, double score, Pose2* corrected);
 
   SlamParams params_;
-  bool kalman_ = false;  // screening switch GML_K=1
+  int kalman_ = 0;  // screening switch GML_K: 1 climb prior from the carried covariance, 2 main's, 3 = 1 with odometry's scales
   MotionModel motion_;
   ScanMatcher matcher_;
   ScanMatcher local_matcher_;  // the back end's, against the recent scans
