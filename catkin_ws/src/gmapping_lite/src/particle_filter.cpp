@@ -271,6 +271,8 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
       if (kalman_ == 3 || kalman_ == 4)
         p.covariance = Covariance::diagonal(0, 0, 0, params_.motion.srr * params_.motion.srr,
                                             params_.motion.stt * params_.motion.stt);
+      if (kalman_ == 5)  // k4 with the rotation scale only
+        p.covariance = Covariance::diagonal(0, 0, 0, 0, params_.motion.stt * params_.motion.stt);
     }
     initialized_ = true;
     last_odom_ = previous_odom_ = odom;
