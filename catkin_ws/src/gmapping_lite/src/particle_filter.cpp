@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <numeric>
+#include <string>
 
 namespace gmapping_lite {
 
@@ -17,6 +20,7 @@ MatcherParams withMapResolution(MatcherParams m, double delta) {
 
 ParticleFilter::ParticleFilter(const SlamParams& params)
     : params_(params),
+      kalman_(std::getenv("GML_K") ? std::atoi(std::getenv("GML_K")) : 0),
       motion_(params.motion),
       matcher_(withMapResolution(params.matcher, params.delta)),
       local_matcher_(withMapResolution(params.matcher, params.delta)),
@@ -236,6 +240,9 @@ void ParticleFilter::closeLoop(const std::vector<const TrajectoryNode*>& chain,
     p.trajectory = last;
     p.log_weight = p.weight_sum = 0.0;
     p.drift_xy2 = p.drift_theta2 = 0.0;
+    for (int i = 0; i < 5; ++i)
+      for (int j = 0; j < 5; ++j)
+        if (i < 3 || j < 3) p.covariance.m[i][j] = 0.0;
   }
   report->map_rebuilt = true;
 }
@@ -259,6 +266,13 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
       p.pose = odom;
       p.map = first;
       p.trajectory = root;
+      // Odometry's scales are known as well as the motion model knows a metre's travel
+      // (srr, a fraction of the distance) and a radian's turn (stt).
+      if (kalman_ == 3 || kalman_ == 4)
+        p.covariance = Covariance::diagonal(0, 0, 0, params_.motion.srr * params_.motion.srr,
+                                            params_.motion.stt * params_.motion.stt);
+      if (kalman_ == 5)  // k4 with the rotation scale only
+        p.covariance = Covariance::diagonal(0, 0, 0, 0, params_.motion.stt * params_.motion.stt);
     }
     initialized_ = true;
     last_odom_ = previous_odom_ = odom;
@@ -299,14 +313,24 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
   for (auto& p : particles_) {
     // The prior: this increment's spread plus what odometry may have drifted since a scan
     // last placed the particle (variances add).
-    const Pose2 predicted = p.pose * inc;
-    const OdometryPrior prior{std::sqrt(increment_prior.sigma_xy * increment_prior.sigma_xy +
-                                        p.drift_xy2),
-                              std::sqrt(increment_prior.sigma_theta *
-                                            increment_prior.sigma_theta +
-                                        p.drift_theta2)};
+    const Pose2 predicted = kalman_ ? predict(p.pose, inc, p.scale) : p.pose * inc;
+    OdometryPrior prior{std::sqrt(increment_prior.sigma_xy * increment_prior.sigma_xy +
+                                  p.drift_xy2),
+                        std::sqrt(increment_prior.sigma_theta * increment_prior.sigma_theta +
+                                  p.drift_theta2)};
+    Covariance predicted_covariance;
+    if (kalman_) {
+      predicted_covariance =
+          propagate(p.covariance, p.pose, inc, increment_prior.sigma_xy * increment_prior.sigma_xy,
+                    increment_prior.sigma_theta * increment_prior.sigma_theta, p.scale);
+      if (kalman_ == 1 || kalman_ == 3)
+        prior = {std::sqrt(predicted_covariance.varXY()),
+                 std::sqrt(predicted_covariance.varTheta())};
+    }
     // gmapping's proposal: the match climbs from a sample of the motion model.
-    const Pose2 sample = motion_.sample(p.pose, last_odom_, odom, rng_);
+    Pose2 sample = motion_.sample(p.pose, last_odom_, odom, rng_);
+    // The sample's noise about the unscaled prediction, applied to the scaled one.
+    if (kalman_) sample = predicted * (p.pose * inc).inverse() * sample;
     matcher_.prepare(p.map, sample, points);
     Pose2 corrected;
     double score = matcher_.optimizeFrom(sample, predicted, points, &corrected, prior);
@@ -314,7 +338,13 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
         points.points.size() >= 3)
       score = rescue(p.map, predicted, points, prior, score, &corrected);
     if (score > params_.minimum_score) {
-      p.pose = corrected;
+      if (kalman_) {
+        p.pose = fuse(predicted, predicted_covariance, corrected,
+                      matcher_.calibratedInformation(corrected, points), &p.covariance,
+                      &p.scale);
+      } else {
+        p.pose = corrected;
+      }
       p.drift_xy2 = p.drift_theta2 = 0.0;
       p.placed = true;
     } else {
@@ -322,6 +352,7 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
       // would tell the samples apart), and the spread is carried to the next match.
       ++report.failed_matches;
       p.pose = predicted;
+      p.covariance = predicted_covariance;
       p.drift_xy2 = prior.sigma_xy * prior.sigma_xy;
       p.drift_theta2 = prior.sigma_theta * prior.sigma_theta;
       // Its scan is drawn if the pose is known to a cell at the scan's typical range, or if
@@ -380,6 +411,13 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
   report.update_index = updates_++;
   report.best_score = best_score;
   report.best_pose = best().pose;
+  if (std::getenv("GML_K_LOG") && updates_ % 50 == 0) {
+    const Particle& b = best();
+    std::printf("K %d scale %.4f %.4f sd %.4f %.4f pose sd %.4f %.4f\n", updates_,
+                 b.scale.distance, b.scale.rotation, std::sqrt(b.covariance.m[3][3]),
+                 std::sqrt(b.covariance.m[4][4]), std::sqrt(b.covariance.varXY()),
+                 std::sqrt(b.covariance.varTheta()));
+  }
   return report;
 }
 
