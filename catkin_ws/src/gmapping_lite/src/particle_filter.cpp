@@ -2,10 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <numeric>
-#include <string>
 
 namespace gmapping_lite {
 
@@ -20,7 +17,6 @@ MatcherParams withMapResolution(MatcherParams m, double delta) {
 
 ParticleFilter::ParticleFilter(const SlamParams& params)
     : params_(params),
-      kalman_(std::getenv("GML_K") ? std::atoi(std::getenv("GML_K")) : 0),
       motion_(params.motion),
       matcher_(withMapResolution(params.matcher, params.delta)),
       local_matcher_(withMapResolution(params.matcher, params.delta)),
@@ -268,11 +264,8 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
       p.trajectory = root;
       // Odometry's scales are known as well as the motion model knows a metre's travel
       // (srr, a fraction of the distance) and a radian's turn (stt).
-      if (kalman_ == 3 || kalman_ == 4)
-        p.covariance = Covariance::diagonal(0, 0, 0, params_.motion.srr * params_.motion.srr,
-                                            params_.motion.stt * params_.motion.stt);
-      if (kalman_ == 5)  // k4 with the rotation scale only
-        p.covariance = Covariance::diagonal(0, 0, 0, 0, params_.motion.stt * params_.motion.stt);
+      p.covariance = Covariance::diagonal(0, 0, 0, params_.motion.srr * params_.motion.srr,
+                                          params_.motion.stt * params_.motion.stt);
     }
     initialized_ = true;
     last_odom_ = previous_odom_ = odom;
@@ -311,26 +304,21 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
   for (const auto& q : points.points) mean_range += q.beams * std::hypot(q.hx, q.hy);
   mean_range = points.beams > 0.0 ? mean_range / points.beams : 0.0;
   for (auto& p : particles_) {
-    // The prior: this increment's spread plus what odometry may have drifted since a scan
-    // last placed the particle (variances add).
-    const Pose2 predicted = kalman_ ? predict(p.pose, inc, p.scale) : p.pose * inc;
-    OdometryPrior prior{std::sqrt(increment_prior.sigma_xy * increment_prior.sigma_xy +
-                                  p.drift_xy2),
-                        std::sqrt(increment_prior.sigma_theta * increment_prior.sigma_theta +
-                                  p.drift_theta2)};
-    Covariance predicted_covariance;
-    if (kalman_) {
-      predicted_covariance =
-          propagate(p.covariance, p.pose, inc, increment_prior.sigma_xy * increment_prior.sigma_xy,
-                    increment_prior.sigma_theta * increment_prior.sigma_theta, p.scale);
-      if (kalman_ == 1 || kalman_ == 3)
-        prior = {std::sqrt(predicted_covariance.varXY()),
-                 std::sqrt(predicted_covariance.varTheta())};
-    }
-    // gmapping's proposal: the match climbs from a sample of the motion model.
-    Pose2 sample = motion_.sample(p.pose, last_odom_, odom, rng_);
-    // The sample's noise about the unscaled prediction, applied to the scaled one.
-    if (kalman_) sample = predicted * (p.pose * inc).inverse() * sample;
+    // Odometry's increment as this particle's estimate of its scales corrects it.
+    const Pose2 predicted = predict(p.pose, inc, p.scale);
+    // The match's prior: this increment's spread plus what odometry may have drifted since a
+    // scan last placed the particle (variances add).
+    const OdometryPrior prior{
+        std::sqrt(increment_prior.sigma_xy * increment_prior.sigma_xy + p.drift_xy2),
+        std::sqrt(increment_prior.sigma_theta * increment_prior.sigma_theta + p.drift_theta2)};
+    // The pose's covariance relative to the map, carried forward and grown by the increment.
+    const Covariance predicted_covariance =
+        propagate(p.covariance, p.pose, inc, increment_prior.sigma_xy * increment_prior.sigma_xy,
+                  increment_prior.sigma_theta * increment_prior.sigma_theta, p.scale);
+    // gmapping's proposal: the match climbs from a sample of the motion model (its noise about
+    // the unscaled prediction, applied to the scaled one).
+    const Pose2 sample =
+        predicted * (p.pose * inc).inverse() * motion_.sample(p.pose, last_odom_, odom, rng_);
     matcher_.prepare(p.map, sample, points);
     Pose2 corrected;
     double score = matcher_.optimizeFrom(sample, predicted, points, &corrected, prior);
@@ -338,13 +326,9 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
         points.points.size() >= 3)
       score = rescue(p.map, predicted, points, prior, score, &corrected);
     if (score > params_.minimum_score) {
-      if (kalman_) {
-        p.pose = fuse(predicted, predicted_covariance, corrected,
-                      matcher_.calibratedInformation(corrected, points), &p.covariance,
-                      &p.scale);
-      } else {
-        p.pose = corrected;
-      }
+      // The match, weighed per map cell, against the prediction and its carried covariance.
+      p.pose = fuse(predicted, predicted_covariance, corrected,
+                    matcher_.calibratedInformation(corrected, points), &p.covariance, &p.scale);
       p.drift_xy2 = p.drift_theta2 = 0.0;
       p.placed = true;
     } else {
@@ -411,13 +395,6 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
   report.update_index = updates_++;
   report.best_score = best_score;
   report.best_pose = best().pose;
-  if (std::getenv("GML_K_LOG") && updates_ % 50 == 0) {
-    const Particle& b = best();
-    std::printf("K %d scale %.4f %.4f sd %.4f %.4f pose sd %.4f %.4f\n", updates_,
-                 b.scale.distance, b.scale.rotation, std::sqrt(b.covariance.m[3][3]),
-                 std::sqrt(b.covariance.m[4][4]), std::sqrt(b.covariance.varXY()),
-                 std::sqrt(b.covariance.varTheta()));
-  }
   return report;
 }
 

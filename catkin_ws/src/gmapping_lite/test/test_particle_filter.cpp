@@ -125,7 +125,6 @@ TEST(ParticleFilter, ParticlesShareMapMemory) {
 }
 
 TEST(ParticleFilter, CarriedCovarianceShrinksOnMatchesAndGrowsWithoutThem) {
-  setenv("GML_K", "4", 1);  // screening switch
   const SyntheticWorld world = SyntheticWorld::office();
   RunOptions options;
   const SyntheticRun run = simulateRun(world, officeTour(), options);
@@ -172,14 +171,12 @@ TEST(ParticleFilter, CarriedCovarianceShrinksOnMatchesAndGrowsWithoutThem) {
     last_odom = run.steps[i].odom;
   }
   EXPECT_EQ(updates, 5);
-  unsetenv("GML_K");
 }
 
 TEST(ParticleFilter, LearnsOdometrysScaleFactors) {
   // A base whose odometry overstates distance by 3 % and turns by 5 % (a wheel radius and a
   // track width off): the matches' corrections, through each particle's covariance of pose and
   // scales, estimate both, and the trajectory stays on the truth.
-  setenv("GML_K", "4", 1);  // screening switch
   const SyntheticWorld world = SyntheticWorld::office();
   RunOptions options;
   options.odom_scale_linear = 0.03;
@@ -192,5 +189,4 @@ TEST(ParticleFilter, LearnsOdometrysScaleFactors) {
               scale.distance, 1.0 / 1.03, scale.rotation, 1.0 / 1.05);
   EXPECT_NEAR(scale.distance, 1.0 / 1.03, 0.01);
   EXPECT_NEAR(scale.rotation, 1.0 / 1.05, 0.01);
-  unsetenv("GML_K");
 }

@@ -88,7 +88,6 @@ class ParticleFilter {
                 const OdometryPrior& prior, double score, Pose2* corrected);
 
   SlamParams params_;
-  int kalman_ = 0;  // screening switch GML_K: 1 climb prior from the carried covariance, 2 main's, 3 = 1 with odometry's scales, 4 = 2 with them, 5 = 2 with the rotation scale
   MotionModel motion_;
   ScanMatcher matcher_;
   ScanMatcher local_matcher_;  // the back end's, against the recent scans
