@@ -125,22 +125,47 @@ def ros_environment(port, base=None):
     return env
 
 
+# What rosmaster prints (rosgraph.xmlrpc) when it cannot bind its port; it then stays up unserved.
+PORT_TAKEN = "Unable to start XML-RPC server"
+
+
+class PortTaken(RuntimeError):
+    """rosmaster could not bind its port."""
+
+
 class RosGraph:
     """A roscore on a free port plus the processes a test starts against it."""
 
     def __init__(self, workdir, base_env=None):
         self.workdir = Path(workdir)
-        self.port = free_port()
-        self.env = ros_environment(self.port, base_env)
         self.procs = []
         self._log_index = 0
         self._clock_file = None
+        try:
+            self._start_core(base_env)
+        except BaseException:
+            self.close()
+            raise
+
+    def _start_core(self, base_env):
         # What roscore runs (its launch file roslaunch/roscore.xml): rosmaster --core -w 3, the
         # /run_id roslaunch sets, and rosout; started directly, because roscore's roslaunch
         # around them costs most of a CPU second per test on a two-core machine.
-        cmd = ["rosmaster", "--core", "-p", str(self.port), "-w", "3"]
-        self.core = self.start(cmd, name="rosmaster")
-        self.wait_for_master(until=lambda master: master.getPid(CALLER_ID)[0] == 1)
+        # The free port can be taken before rosmaster binds it (another worker's master, or an
+        # outgoing connection's local port: both come from the same ephemeral range), and then
+        # rosmaster stays up without serving: it is started again on another port.
+        for attempt in range(3):
+            self.port = free_port()
+            self.env = ros_environment(self.port, base_env)
+            cmd = ["rosmaster", "--core", "-p", str(self.port), "-w", "3"]
+            self.core = self.start(cmd, name="rosmaster")
+            try:
+                self.wait_for_master(until=lambda master: master.getPid(CALLER_ID)[0] == 1)
+                break
+            except PortTaken:
+                _kill_groups([self.core], 5)
+                if attempt == 2:
+                    raise
         self.master().setParam(CALLER_ID, "/run_id", str(uuid.uuid1()))
         # start() runs the file rosrun resolves, found once per worker (without_rosrun).
         rosout = self.start(["rosrun", "rosout", "rosout", "__name:=rosout"], name="rosout")
@@ -231,13 +256,18 @@ class RosGraph:
         while time.monotonic() < deadline:
             if self.core.poll() is not None:
                 raise RuntimeError("the master died:\n" + self.output(self.core))
+            if PORT_TAKEN in self.output(self.core):
+                raise PortTaken(self.output(self.core))
             try:
                 if until(self.master()):
                     return
             except (OSError, xmlrpc.client.Error):
                 pass
             time.sleep(0.1)
-        raise TimeoutError("roscore did not answer within %s s" % timeout)
+        raise TimeoutError(
+            f"roscore did not answer within {timeout} s; rosmaster's output:\n"
+            + self.output(self.core)[-2000:]
+        )
 
     def system_state(self):
         """[publishers, subscribers, services], each [[name, [node, ...]], ...]."""
