@@ -27,7 +27,14 @@ XY_GOAL_TOLERANCE = 0.05  # move_base_lite's config/move_base_params.yaml
 # odometry noise (a few per cent) and with a last command's worth of slow approach, a few
 # centimetres.
 DRIFT_SINCE_LAST_UPDATE = 0.05
-GOAL_YAW_LIMIT = 0.2
+# rad: move_base_lite's yaw_goal_tolerance (0.10, on amcl's estimate) plus amcl's heading error
+# once converged (0.10).
+YAW_GOAL_TOLERANCE = 0.10
+GOAL_YAW_LIMIT = YAW_GOAL_TOLERANCE + 0.10
+# The rviz-style initial pose below is this far off in heading; until amcl has converged (the
+# first goal absorbs the offset) its heading error is bounded by it, not by the converged 0.10.
+INITIAL_YAW_OFFSET = 0.2
+FIRST_GOAL_YAW_LIMIT = YAW_GOAL_TOLERANCE + INITIAL_YAW_OFFSET
 AMCL_TRACKING_LIMIT = 0.2  # m, largest error after the first two updates while driving
 
 
@@ -69,7 +76,7 @@ def goal_args(goals):
 def test_amcl_converges_from_an_offset_pose_and_goals_are_reached(ros, tmp_path):
     start_navigation(ros)
     # An rviz 2D Pose Estimate 0.3 m and 0.2 rad off the true start.
-    offset = f"{START[0] + 0.2},{START[1] - 0.22},{START[2] + 0.2}"
+    offset = f"{START[0] + 0.2},{START[1] - 0.22},{START[2] + INITIAL_YAW_OFFSET}"
     records = run_client(ros, tmp_path, "--initial-pose", offset, *goal_args(GOALS))
     goals = [r for r in records if "goal" in r]
     for r in goals:
@@ -79,10 +86,10 @@ def test_amcl_converges_from_an_offset_pose_and_goals_are_reached(ros, tmp_path)
             f"{r['amcl_max_error']:.3f} m, last {r['amcl_last_error']:.3f} m"
         )
     assert len(goals) == len(GOALS)
-    for r in goals:
+    for n, r in enumerate(goals):
         assert r["state"] == "SUCCEEDED", r
         assert r["position_error"] <= GOAL_POSITION_LIMIT, r
-        assert r["yaw_error"] <= GOAL_YAW_LIMIT, r
+        assert r["yaw_error"] <= (FIRST_GOAL_YAW_LIMIT if n == 0 else GOAL_YAW_LIMIT), r
     # Converged: from the second goal on (the first absorbs the initial offset).
     for r in goals[1:]:
         assert r["amcl_max_error"] <= AMCL_TRACKING_LIMIT, r
