@@ -1,5 +1,6 @@
 import numpy as np
 import pytest
+from explorer.costmap import obstacle_clearance
 from explorer.frontiers import (
     closed_gaps,
     find_frontiers,
@@ -73,11 +74,12 @@ def test_closed_gaps_closes_what_the_robot_cannot_pass_and_keeps_doors():
     classes[5, :] = OCCUPIED  # a wall, 0.1 m cells ...
     classes[5, 3:5] = FREE  # ... with a 0.2 m gap (narrower than a 0.36 m robot)
     classes[5, 15:24] = FREE  # and a 0.9 m door
-    closed = closed_gaps(classes, 0.1, 0.36)
+    clearance = obstacle_clearance(classes, 0.1)
+    closed = closed_gaps(clearance, 0.1, 0.36)
     assert closed[5, 3:5].all()
     assert not closed[5, 15:24].any()
     assert closed[classes == OCCUPIED].all()
-    assert not closed_gaps(classes, 0.1, 0.0)[5, 3:5].any()
+    assert not closed_gaps(clearance, 0.1, 0.0)[5, 3:5].any()
 
 
 def test_gain_leaves_out_unknown_space_behind_a_face_mapped_with_gaps():
@@ -94,11 +96,12 @@ def test_gain_leaves_out_unknown_space_behind_a_face_mapped_with_gaps():
     assert frontiers
     information_gain(classes, labels, frontiers, steps=30)
     assert sum(f.gain for f in frontiers) >= 50
-    blocked = closed_gaps(classes, 0.1, 0.36)
+    blocked = closed_gaps(obstacle_clearance(classes, 0.1), 0.1, 0.36)
     information_gain(classes, labels, frontiers, steps=30, blocked=blocked)
     assert all(f.gain == 0 for f in frontiers)
     # A doorway wide enough to drive through keeps its gain.
     classes[9, 12:18] = FREE
     labels, frontiers = find_frontiers(classes)
-    information_gain(classes, labels, frontiers, 30, closed_gaps(classes, 0.1, 0.36))
+    blocked = closed_gaps(obstacle_clearance(classes, 0.1), 0.1, 0.36)
+    information_gain(classes, labels, frontiers, 30, blocked)
     assert max(f.gain for f in frontiers) >= 50

@@ -19,17 +19,21 @@ class Costmap:
     clearance: np.ndarray
 
 
+def obstacle_clearance(classes, resolution):
+    """Distance (m) from each cell's centre to the nearest OCCUPIED cell's edge: negative on
+    obstacles, inf everywhere when there is none."""
+    occupied = classes == OCCUPIED
+    if not occupied.any():
+        return np.full(classes.shape, np.inf)
+    return ndimage.distance_transform_edt(~occupied) * resolution - resolution / 2
+
+
 def inflate(classes, resolution, robot_radius, inflation_radius, cost_scale=3.0):
     """Inflate OCCUPIED cells: cells closer than `robot_radius` are lethal; between that
     and `inflation_radius` the cost falls quadratically to zero."""
     if inflation_radius < robot_radius:
         raise ValueError("inflation_radius must be >= robot_radius")
-    occupied = classes == OCCUPIED
-    if occupied.any():
-        # Distance from a cell's centre to the nearest obstacle cell's edge.
-        clearance = ndimage.distance_transform_edt(~occupied) * resolution - resolution / 2
-    else:
-        clearance = np.full(classes.shape, np.inf)
+    clearance = obstacle_clearance(classes, resolution)
     traversable = (classes == FREE) & (clearance > robot_radius)
     band = inflation_radius - robot_radius
     if band > 0:

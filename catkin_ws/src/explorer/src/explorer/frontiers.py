@@ -5,7 +5,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import ndimage
 
-from .grid import FREE, OCCUPIED, UNKNOWN
+from .grid import FREE, UNKNOWN
 
 EIGHT = np.ones((3, 3), dtype=bool)
 
@@ -75,16 +75,17 @@ def spread_labels(labels, through, steps):
     return spread, distance
 
 
-def closed_gaps(classes, resolution, width):
-    """OCCUPIED cells with every gap between them narrower than `width` metres closed
+def closed_gaps(clearance, resolution, width):
+    """Obstacle cells with every gap between them narrower than `width` metres closed
     (a morphological closing by a disc of width / 2): a body that wide cannot pass such a
     gap, and a scan that left a few cells of an obstacle's face unmarked lets its unknown
-    inside touch the free space through one."""
-    occupied = classes == OCCUPIED
+    inside touch the free space through one. `clearance`: the grid's distances to the
+    obstacles, as costmap.obstacle_clearance gives them (the costmap has them already)."""
+    occupied = clearance < 0
     radius = width / 2
     if not occupied.any() or radius <= 0:
         return occupied
-    grown = ndimage.distance_transform_edt(~occupied) * resolution <= radius
+    grown = clearance + resolution / 2 <= radius  # within radius of an obstacle cell's centre
     return grown & (ndimage.distance_transform_edt(grown) * resolution > radius)
 
 

@@ -133,7 +133,7 @@ class MapPlanner:
         # diameter: the inside of furniture whose face the scan mapped with gaps, the
         # space behind a bed against a wall) is no gain: frontiers opening only onto it
         # attract goals that no look ever clears.
-        blocked = closed_gaps(coarse, geometry.resolution, 2 * p.robot_radius)
+        blocked = closed_gaps(costmap.clearance, geometry.resolution, 2 * p.robot_radius)
         steps = int(round(p.info_radius / geometry.resolution))
         information_gain(coarse, labels, frontiers, steps, blocked)
         dropped = [f.label for f in frontiers if f.gain * cell_area < p.min_gain]
