@@ -167,7 +167,7 @@ class RosGraph:
                 if attempt == 2:
                     raise
         self.master().setParam(CALLER_ID, "/run_id", str(uuid.uuid1()))
-        # start() runs the file rosrun resolves, found once per worker (without_rosrun).
+        # start() runs the file rosrun resolves, asked once per run (without_rosrun).
         rosout = self.start(["rosrun", "rosout", "rosout", "__name:=rosout"], name="rosout")
         # Up before the test goes on, as a test expects of roscore: else rosout could read a
         # /use_sim_time the test sets and add itself to /clock's subscribers.
@@ -256,8 +256,9 @@ class RosGraph:
         while time.monotonic() < deadline:
             if self.core.poll() is not None:
                 raise RuntimeError("the master died:\n" + self.output(self.core))
-            if PORT_TAKEN in self.output(self.core):
-                raise PortTaken(self.output(self.core))
+            output = self.output(self.core)
+            if PORT_TAKEN in output:
+                raise PortTaken(output)
             try:
                 if until(self.master()):
                     return
