@@ -1,6 +1,12 @@
 // Small builders for test worlds.
 #pragma once
 
+#include <stdlib.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
 #include "bullet_turtlebot/world_spec.hpp"
 
 namespace bullet_turtlebot {
@@ -22,6 +28,27 @@ inline WorldSpec box_world(const Pose2D& pose, double size_x, double size_y, dou
 inline WorldSpec wall_world(double face_x, double height = 1.0) {
   return box_world(Pose2D{face_x + 0.5, 0.0, 0.0}, 1.0, 10.0, height);
 }
+
+// A fresh directory under /tmp, removed with everything in it when the test ends (tests run
+// on every build and CI run: they must not leave files behind).
+class ScopedTempDir {
+ public:
+  explicit ScopedTempDir(const std::string& prefix) {
+    std::string tmpl = "/tmp/" + prefix + "_XXXXXX";
+    if (mkdtemp(tmpl.data()) == nullptr) throw std::runtime_error("mkdtemp failed for " + tmpl);
+    path_ = tmpl;
+  }
+  ~ScopedTempDir() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  ScopedTempDir(const ScopedTempDir&) = delete;
+  ScopedTempDir& operator=(const ScopedTempDir&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
 
 }  // namespace testing_helpers
 }  // namespace bullet_turtlebot

@@ -25,8 +25,8 @@ TEST(OccupancyExport, BoxRasterisedInMapServerFormat) {
     occupied += p == 0;
   }
   EXPECT_EQ(occupied, 10 * 5);
-  char tmpl[] = "/tmp/bt_export_XXXXXX";
-  const std::string base = std::string(mkdtemp(tmpl)) + "/truth";
+  const testing_helpers::ScopedTempDir dir("bt_export");
+  const std::string base = dir.path() + "/truth";
   write_map(map, base);
   std::ifstream yaml(base + ".yaml");
   std::stringstream text;

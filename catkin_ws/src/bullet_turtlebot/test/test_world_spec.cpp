@@ -6,15 +6,11 @@
 
 #include "bullet_turtlebot/image_io.hpp"
 #include "bullet_turtlebot/world_spec.hpp"
+#include "test_helpers.hpp"
 
 using namespace bullet_turtlebot;
 
 namespace {
-
-std::string temp_dir() {
-  char tmpl[] = "/tmp/bt_world_spec_XXXXXX";
-  return mkdtemp(tmpl);
-}
 
 void write_file(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
@@ -38,7 +34,8 @@ TEST(WorldSpec, MapServerThresholds) {
 }
 
 TEST(WorldSpec, LoadsImagePrimitivesAndStart) {
-  const std::string dir = temp_dir();
+  const testing_helpers::ScopedTempDir temp("bt_world_spec");
+  const std::string& dir = temp.path();
   const std::string pixels{0, char(254), char(254), char(254), char(254), char(254), char(254), 0};
   write_file(dir + "/m.pgm", "P5\n4 2\n255\n" + pixels);
   write_file(dir + "/w.yaml",
@@ -64,7 +61,8 @@ TEST(WorldSpec, LoadsImagePrimitivesAndStart) {
 }
 
 TEST(WorldSpec, ErrorsNameTheFileAndTheProblem) {
-  const std::string dir = temp_dir();
+  const testing_helpers::ScopedTempDir temp("bt_world_spec");
+  const std::string& dir = temp.path();
   const std::string missing_file = dir + "/nope.yaml";
   try {
     load_world_file(missing_file);
@@ -105,7 +103,8 @@ TEST(WorldSpec, ErrorsNameTheFileAndTheProblem) {
 }
 
 TEST(ImageIo, ColourAndAsciiImagesAverageChannels) {
-  const std::string dir = temp_dir();
+  const testing_helpers::ScopedTempDir temp("bt_world_spec");
+  const std::string& dir = temp.path();
   write_file(dir + "/c.ppm", "P3\n2 1\n255\n0 0 0  255 255 252\n");
   const GreyImage c = read_pnm(dir + "/c.ppm");
   ASSERT_EQ(c.pixels.size(), 2u);
