@@ -5,10 +5,12 @@ Every process started through a RosGraph is killed (with its process group) when
 graph is closed, so a failing test leaves nothing running.
 """
 
+import atexit
 import functools
 import hashlib
 import json
 import os
+import shutil
 import signal
 import socket
 import subprocess
@@ -107,9 +109,19 @@ def launch_node_list(launch_args, env):
         os.environ.update(saved)
 
 
-def ros_environment(port, base=None):
+@functools.lru_cache(maxsize=None)
+def _process_log_dir():
+    """One ROS log folder for this process's graphs that have no folder of their own, removed
+    when the process ends (a folder per graph left some 250 in /tmp per suite run)."""
+    folder = tempfile.mkdtemp(prefix="roslog-")
+    atexit.register(shutil.rmtree, folder, ignore_errors=True)
+    return folder
+
+
+def ros_environment(port, base=None, log_dir=None):
     """The environment for nodes of a master on `port`: `base` (default: this process's, set
-    up by devel/setup.bash) with the master's address and test-friendly logging."""
+    up by devel/setup.bash) with the master's address and test-friendly logging. ROS's log
+    files go to `log_dir`, else to base's ROS_LOG_DIR, else to a folder removed at exit."""
     env = dict(os.environ if base is None else base)
     if "ROS_PACKAGE_PATH" not in env:
         raise RuntimeError(
@@ -121,7 +133,7 @@ def ros_environment(port, base=None):
     env["PYENV_VERSION"] = "system"
     env["PYTHONUNBUFFERED"] = "1"
     env["ROSCONSOLE_FORMAT"] = "[${severity}] [${node}]: ${message}"
-    env["ROS_LOG_DIR"] = env.get("ROS_LOG_DIR") or tempfile.mkdtemp(prefix="roslog-")
+    env["ROS_LOG_DIR"] = str(log_dir or env.get("ROS_LOG_DIR") or _process_log_dir())
     return env
 
 
@@ -156,7 +168,10 @@ class RosGraph:
         # rosmaster stays up without serving: it is started again on another port.
         for attempt in range(3):
             self.port = free_port()
-            self.env = ros_environment(self.port, base_env)
+            # ROS's own log files beside the test's other outputs (pytest prunes old runs).
+            log_dir = self.workdir / "ros_log"
+            log_dir.mkdir(parents=True, exist_ok=True)
+            self.env = ros_environment(self.port, base_env, log_dir=log_dir)
             cmd = ["rosmaster", "--core", "-p", str(self.port), "-w", "3"]
             self.core = self.start(cmd, name="rosmaster")
             try:
