@@ -132,6 +132,9 @@ class RvizSession:
         ]
         env = dict(self.env)
         env.pop("DISPLAY", None)
+        # xvfb-run's folder (its Xauthority) in the session's own folder: xvfb-run leaves it
+        # behind when it is stopped by a signal.
+        env["TMPDIR"] = str(self.workdir)
         with open(self.log_path, "w") as log:
             self.proc = subprocess.Popen(
                 cmd,
