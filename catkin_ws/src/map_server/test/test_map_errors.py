@@ -1,6 +1,9 @@
 """Bad map files: each gets an exception naming the file and the problem."""
 
+import os
+import struct
 import sys
+import zlib
 from pathlib import Path
 
 import pytest
@@ -139,3 +142,49 @@ def test_deeply_nested_yaml_is_a_clear_error(tmp_path):
 
     with pytest.raises(map_io.MapYamlError, match="nested too deeply"):
         parse_map_yaml("image: " + "[" * 5000 + "]" * 5000, tmp_path / "m.yaml")
+
+
+@pytest.mark.parametrize(
+    "key, value, message",
+    [
+        ("origin", "[0, 0, 1" + "0" * 400 + "]", "'origin' must be finite"),
+        ("resolution", "1" + "0" * 400, "'resolution' must be finite"),
+        ("resolution", "1.0e-320", "'resolution' 1e-320 does not fit MapMetaData's float32"),
+        ("resolution", "1.0e+39", "'resolution' 1e\\+39 does not fit MapMetaData's float32"),
+        ("image", '"a\\0b"', "'image' must be a file name"),
+    ],
+)
+def test_values_python_cannot_use_as_given(tmp_path, key, value, message):
+    path = yaml_with(tmp_path, **{key: value})
+    with pytest.raises(map_io.MapYamlError, match="bad.yaml: " + message):
+        map_io.load_map(path)
+
+
+def test_exponent_without_a_dot_is_a_number_as_in_yaml_cpp(tmp_path):
+    omap = map_io.load_map(yaml_with(tmp_path, resolution="5e-2", origin="[-1e1, 2E0, 0]"))
+    assert omap.resolution == 0.05 and omap.origin == (-10.0, 2.0, 0.0)
+
+
+def test_devices_and_pipes_are_refused_not_read(tmp_path):
+    with pytest.raises(map_io.MapYamlError, match="/dev/zero: not a regular file"):
+        map_io.load_map("/dev/zero")
+    with pytest.raises(map_io.MapImageError, match="/dev/zero: not a regular file"):
+        map_io.load_map(write_yaml(tmp_path / "z.yaml", "/dev/zero"))
+    fifo = tmp_path / "pipe.yaml"
+    os.mkfifo(fifo)
+    with pytest.raises(map_io.MapYamlError, match="pipe.yaml: not a regular file"):
+        map_io.load_map(fifo)
+
+
+def test_png_declaring_a_huge_picture_is_refused(tmp_path):
+    # A PNG declaring 20000 x 20000 pixels (PIL refuses more than 179 M) with no pixel data.
+    def chunk(kind, data):
+        return (
+            struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+        )
+
+    header = struct.pack(">IIBBBBB", 20000, 20000, 8, 0, 0, 0, 0)
+    png = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", b"") + chunk(b"IEND", b"")
+    (tmp_path / "bomb.png").write_bytes(png)
+    with pytest.raises(map_io.MapImageError, match="bomb.png: too large for a map"):
+        map_io.load_map(write_yaml(tmp_path / "b.yaml", "bomb.png"))

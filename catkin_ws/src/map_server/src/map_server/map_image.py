@@ -6,7 +6,7 @@ from pathlib import Path
 import numpy as np
 
 from map_server import pgm
-from map_server.errors import MapFileNotFoundError, MapImageError, cwd_note
+from map_server.errors import MapFileNotFoundError, MapImageError, cwd_note, special_file_note
 
 # map_saver's pixel values.
 PGM_FREE, PGM_OCCUPIED, PGM_UNKNOWN = 254, 0, 205
@@ -21,6 +21,9 @@ def read_grey_image(path):
     are scaled to 0..255.
     """
     path = Path(path)
+    special = special_file_note(path)
+    if special:
+        raise MapImageError(f"{path}: {special}; give the map image file")
     try:
         with open(path, "rb") as handle:
             data = handle.read()
@@ -43,6 +46,8 @@ def _read_with_pil(path, data):
     try:
         image = Image.open(io.BytesIO(data))
         image.load()
+    except Image.DecompressionBombError as err:  # a small file declaring a huge picture
+        raise MapImageError(f"{path}: too large for a map: {err}") from None
     except UnidentifiedImageError:
         raise MapImageError(
             f"{path}: not an image format this map server reads (PGM, PNG, JPG, ...)"

@@ -2,12 +2,13 @@
 
 import json
 import math
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
 import yaml
 
-from map_server.errors import MapFileNotFoundError, MapYamlError, cwd_note
+from map_server.errors import MapFileNotFoundError, MapYamlError, cwd_note, special_file_note
 
 MODES = ("trinary", "scale", "raw")
 REQUIRED_KEYS = ("image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh")
@@ -15,6 +16,22 @@ KNOWN_KEYS = frozenset(REQUIRED_KEYS + ("mode",))
 
 # The thresholds map_saver's YAML declares (its pixels 254/0/205 read back as 0/100/-1).
 SAVED_OCCUPIED_THRESH, SAVED_FREE_THRESH = 0.65, 0.196
+
+# nav_msgs/MapMetaData carries the resolution as a float32: its smallest normal and its
+# largest value.
+FLOAT32_TINY, FLOAT32_MAX = 1.1754943508222875e-38, 3.4028234663852886e38
+
+
+class _MapLoader(yaml.SafeLoader):
+    """SafeLoader that also reads `5e-2` and `1e3` as numbers, as YAML 1.2 and the original
+    map_server's yaml-cpp do (PyYAML's YAML 1.1 floats need a dot: it read `5e-2` as text)."""
+
+
+_MapLoader.add_implicit_resolver(
+    "tag:yaml.org,2002:float",
+    re.compile(r"^[-+]?(?:[0-9][0-9_]*)(?:\.[0-9_]*)?[eE][-+]?[0-9]+$"),
+    list("-+0123456789"),
+)
 
 
 @dataclass(frozen=True)
@@ -34,10 +51,25 @@ def number(raw, key, where):
     """A finite float from a YAML value; booleans and strings are refused."""
     if isinstance(raw, bool) or not isinstance(raw, (int, float)):
         raise MapYamlError(f"{where}: '{key}' must be a number, got {raw!r}")
-    value = float(raw)
+    try:
+        value = float(raw)
+    except OverflowError:  # an integer with hundreds of digits
+        value = math.inf
     if not math.isfinite(value):
         raise MapYamlError(f"{where}: '{key}' must be finite, got {raw!r}")
     return value
+
+
+def check_resolution(resolution, where):
+    """A positive resolution that nav_msgs/MapMetaData's float32 field can carry."""
+    if resolution <= 0:
+        raise MapYamlError(f"{where}: 'resolution' must be positive, got {resolution}")
+    if not FLOAT32_TINY <= resolution <= FLOAT32_MAX:
+        raise MapYamlError(
+            f"{where}: 'resolution' {resolution} does not fit MapMetaData's float32 "
+            "(metres per cell, e.g. 0.05)"
+        )
+    return resolution
 
 
 def _negate_flag(raw, where):
@@ -69,7 +101,7 @@ def parse_map_yaml(text, yaml_path):
     yaml_path = Path(yaml_path)
     where = str(yaml_path)
     try:
-        doc = yaml.safe_load(text)
+        doc = yaml.load(text, Loader=_MapLoader)
     except yaml.YAMLError as err:
         raise MapYamlError(f"{where}: not valid YAML: {err}") from None
     except RecursionError:  # PyYAML's parser recurses once per nesting level
@@ -83,11 +115,9 @@ def parse_map_yaml(text, yaml_path):
         f"{where}: unknown key '{key}' ignored" for key in doc if key not in KNOWN_KEYS
     )
     image = doc["image"]
-    if not isinstance(image, str) or not image.strip():
+    if not isinstance(image, str) or not image.strip() or "\0" in image:
         raise MapYamlError(f"{where}: 'image' must be a file name, got {image!r}")
-    resolution = number(doc["resolution"], "resolution", where)
-    if resolution <= 0:
-        raise MapYamlError(f"{where}: 'resolution' must be positive, got {resolution}")
+    resolution = check_resolution(number(doc["resolution"], "resolution", where), where)
     origin = doc["origin"]
     if not isinstance(origin, (list, tuple)) or len(origin) != 3:
         raise MapYamlError(f"{where}: 'origin' must be a list [x, y, yaw], got {origin!r}")
@@ -114,6 +144,9 @@ def parse_map_yaml(text, yaml_path):
 
 def read_map_yaml(yaml_path):
     yaml_path = Path(yaml_path)
+    special = special_file_note(yaml_path)
+    if special:
+        raise MapYamlError(f"{yaml_path}: {special}; give the map YAML file")
     try:
         text = yaml_path.read_text(encoding="utf-8")
     except FileNotFoundError:
