@@ -114,3 +114,36 @@ TEST(ImageIo, ColourAndAsciiImagesAverageChannels) {
   const GreyImage g = read_pnm(dir + "/g.pgm");
   EXPECT_EQ(g.pixels[1], 255);
 }
+
+TEST(WorldSpec, FarPlacesHugeSizesAndSpecialFilesAreRefused) {
+  const testing_helpers::ScopedTempDir temp("bt_world_spec");
+  const std::string& dir = temp.path();
+  auto expect_error = [&](const std::string& text, const std::string& fragment) {
+    const std::string error = error_of(text, dir);
+    EXPECT_NE(error.find(fragment), std::string::npos) << "for: " << text << "\ngot: " << error;
+  };
+  const std::string box = "boxes:\n  - {pose: [3, 0, 0], size: [1, 1, 1]}\n";
+  expect_error("start: [1e300, 0, 0]\n" + box, "'start' must be metres within 1e6 of the origin");
+  expect_error("boxes:\n  - {pose: [1e7, 0, 0], size: [1, 1, 1]}\n", "boxes[0].pose' must be metres within 1e6");
+  expect_error("boxes:\n  - {pose: [0, 0, 0], size: [1e300, 1, 1]}\n", "boxes[0].size must be positive metres");
+  expect_error("cylinders:\n  - {position: [5, 0], radius: 1e300, height: 1}\n", "'cylinders[0].radius' must be at most 1e6");
+  expect_error("cylinders:\n  - {position: [-2e6, 0], radius: 1, height: 1}\n", "'cylinders[0].position[0]' must be metres");
+  expect_error("wall_height: 1e300\n" + box, "'wall_height' must be at most 1e6");
+  write_file(dir + "/m.pgm", "P5\n4 4\n255\n" + std::string(16, char(254)));
+  expect_error("image: m.pgm\nresolution: 0.05\norigin: [1e300, 0, 0]\n", "'origin' must be metres within 1e6");
+  expect_error("image: m.pgm\nresolution: 1e300\norigin: [0, 0, 0]\n", "'resolution' must be at most 1e6");
+  expect_error("image: m.pgm\nresolution: 1e6\norigin: [0, 0, 0]\n", "spans more than 2e6 metres");
+  // A header declaring 20000 x 20000 16-bit colour pixels (2.4 GB) in a 20-byte file: refused
+  // before anything is allocated, as is a plain PGM too short for its header.
+  write_file(dir + "/huge.ppm", "P6\n20000 20000\n65535\n");
+  expect_error("image: huge.ppm\nresolution: 0.05\norigin: [0, 0, 0]\n", "0 bytes left for a 20000 x 20000 image");
+  write_file(dir + "/huge.pgm", "P2\n20000 20000\n255\n1 2 3\n");
+  expect_error("image: huge.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n", "truncated pixel data");
+  expect_error("image: /dev/zero\nresolution: 0.05\norigin: [0, 0, 0]\n", "not a regular file");
+  try {
+    load_world_file("/dev/zero");
+    FAIL() << "no error for /dev/zero";
+  } catch (const WorldFileError& e) {
+    EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos) << e.what();
+  }
+}

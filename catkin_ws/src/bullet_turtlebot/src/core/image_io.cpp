@@ -1,5 +1,7 @@
 #include "bullet_turtlebot/image_io.hpp"
 
+#include <sys/stat.h>
+
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
@@ -42,6 +44,11 @@ int header_int(std::istream& in, const char* what) {
 }  // namespace
 
 GreyImage read_pnm(const std::string& path) {
+  struct stat info;
+  if (::stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode)) {
+    throw ImageError(S_ISDIR(info.st_mode) ? "is a directory, expected an image"
+                                           : "not a regular file (a device or a pipe), expected an image");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ImageError(std::string("cannot open: ") + std::strerror(errno));
   const std::string magic = header_token(in);
@@ -60,8 +67,20 @@ GreyImage read_pnm(const std::string& path) {
     throw ImageError("image too large");
   }
   const size_t count = static_cast<size_t>(image.width) * image.height;
-  image.pixels.resize(count);
   const int bytes = maxval > 255 ? 2 : 1;
+  // Check the header's size against the bytes the file holds before allocating for it: a
+  // 20-byte file declaring 20000 x 20000 16-bit colour pixels must not ask for 2.4 GB.
+  // Plain (ASCII) values take at least two bytes each (a digit and a separator).
+  const std::streamoff here = in.tellg();
+  const auto left = static_cast<unsigned long long>(info.st_size > here ? info.st_size - here : 0);
+  const unsigned long long needed = static_cast<unsigned long long>(count) * channels * (binary ? bytes : 2) -
+                                    (binary ? 0 : 1);
+  if (left < needed) {
+    throw ImageError("truncated pixel data (" + std::to_string(left) + " bytes left for a " +
+                     std::to_string(image.width) + " x " + std::to_string(image.height) + " image, which needs " +
+                     std::to_string(needed) + ")");
+  }
+  image.pixels.resize(count);
   std::vector<unsigned char> raw;
   if (binary) {
     raw.resize(count * channels * bytes);

@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -62,10 +63,35 @@ class Parser {
     return Color{static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])};
   }
 
+  // A place or a length in metres. The simulator's ~x and ~y follow the same rule (within
+  // 1e6 of the origin): Bullet works in single precision, whose step at 1e6 m is 6 cm, so
+  // nothing farther can be simulated to the centimetre; 1e300 would silently blind the laser.
+  double coordinate(const YAML::Node& node, const std::string& what) const {
+    const double value = number(node, what);
+    if (std::abs(value) > kMaxMetres) fail("'" + what + "' must be metres within 1e6 of the origin, got " + node.Scalar());
+    return value;
+  }
+
+  double length(const YAML::Node& node, const std::string& what) const {
+    const double value = positive(node, what);
+    if (value > kMaxMetres) fail("'" + what + "' must be at most 1e6 metres, got " + node.Scalar());
+    return value;
+  }
+
+  // A pose [x, y] or [x, y, yaw]: metres within 1e6 of the origin, radians within 1000
+  // (the simulator's ~yaw rule).
   Pose2D pose(const YAML::Node& node, const std::string& what) const {
     const auto p = numbers(node, what, 2, 3);
+    for (size_t i = 0; i < p.size(); ++i) {
+      const double limit = i < 2 ? kMaxMetres : 1e3;
+      if (std::abs(p[i]) > limit) {
+        fail("'" + what + "' must be metres within 1e6 of the origin and a yaw within 1000 rad");
+      }
+    }
     return Pose2D{p[0], p[1], p.size() > 2 ? p[2] : 0.0};
   }
+
+  static constexpr double kMaxMetres = 1e6;
 
  private:
   std::string source_;
@@ -109,7 +135,7 @@ WorldSpec parse_world_yaml(const std::string& text, const std::string& source, c
 
   WorldSpec spec;
   spec.source = source;
-  if (root["wall_height"]) spec.wall_height = parser.positive(root["wall_height"], "wall_height");
+  if (root["wall_height"]) spec.wall_height = parser.length(root["wall_height"], "wall_height");
   spec.wall_color = parser.color(root["wall_color"], "wall_color", spec.wall_color);
   if (root["start"]) {
     spec.has_start = true;
@@ -122,9 +148,9 @@ WorldSpec parse_world_yaml(const std::string& text, const std::string& source, c
       if (!root[key]) parser.fail(std::string("missing key '") + key + "' (required with 'image')");
     }
     GridSpec& grid = spec.grid;
-    grid.resolution = parser.positive(root["resolution"], "resolution");
-    const auto origin = parser.numbers(root["origin"], "origin", 3, 3);
-    grid.origin = Pose2D{origin[0], origin[1], origin[2]};
+    grid.resolution = parser.length(root["resolution"], "resolution");
+    parser.numbers(root["origin"], "origin", 3, 3);  // exactly [x, y, yaw]
+    grid.origin = parser.pose(root["origin"], "origin");
     bool negate = false;
     if (const YAML::Node n = root["negate"]) {
       const std::string v = n.IsScalar() ? n.Scalar() : "";
@@ -150,6 +176,11 @@ WorldSpec parse_world_yaml(const std::string& text, const std::string& source, c
     } catch (const ImageError& e) {
       parser.fail("image '" + image_path + "': " + e.what());
     }
+    if (std::max(image.width, image.height) * grid.resolution > 2 * Parser::kMaxMetres) {
+      parser.fail("the map (" + std::to_string(image.width) + " x " + std::to_string(image.height) +
+                  " cells at 'resolution' " + root["resolution"].Scalar() +
+                  ") spans more than 2e6 metres: is the resolution in metres per cell?");
+    }
     grid.width = image.width;
     grid.height = image.height;
     grid.occupied = threshold_occupied(image.pixels, negate, occupied_thresh);
@@ -165,7 +196,7 @@ WorldSpec parse_world_yaml(const std::string& text, const std::string& source, c
       box.pose = parser.pose(b["pose"], name + ".pose");
       const auto size = parser.numbers(b["size"], name + ".size", 3, 3);
       for (double s : size) {
-        if (s <= 0) parser.fail(name + ".size must be positive");
+        if (s <= 0 || s > Parser::kMaxMetres) parser.fail(name + ".size must be positive metres, at most 1e6");
       }
       box.size_x = size[0];
       box.size_y = size[1];
@@ -184,10 +215,10 @@ WorldSpec parse_world_yaml(const std::string& text, const std::string& source, c
       }
       CylinderSpec cyl;
       const auto p = parser.numbers(c["position"], name + ".position", 2, 2);
-      cyl.x = p[0];
-      cyl.y = p[1];
-      cyl.radius = parser.positive(c["radius"], name + ".radius");
-      cyl.height = parser.positive(c["height"], name + ".height");
+      cyl.x = parser.coordinate(c["position"][0], name + ".position[0]");
+      cyl.y = parser.coordinate(c["position"][1], name + ".position[1]");
+      cyl.radius = parser.length(c["radius"], name + ".radius");
+      cyl.height = parser.length(c["height"], name + ".height");
       cyl.color = parser.color(c["color"], name + ".color", Color{0.2f, 0.45f, 0.7f});
       spec.cylinders.push_back(cyl);
     }
@@ -202,6 +233,10 @@ WorldSpec load_world_file(const std::string& path) {
   struct stat info;
   if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode)) {
     throw WorldFileError("world file '" + path + "': is a directory, expected a YAML file");
+  }
+  if (::stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode)) {
+    // /dev/zero would be read until memory runs out, a FIFO would block for ever.
+    throw WorldFileError("world file '" + path + "': not a regular file (a device or a pipe), expected a YAML file");
   }
   std::ifstream in(path);
   if (!in) throw WorldFileError("world file '" + path + "': cannot open: " + std::strerror(errno));

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,11 @@ int main(int argc, char** argv) {
   } catch (const bt::WorldFileError& e) {
     ROS_FATAL("%s", e.what());
     std::fprintf(stderr, "simulator: %s\n", e.what());
+    return 2;
+  } catch (const std::bad_alloc&) {
+    ROS_FATAL("world file '%s': too large to load in this machine's memory", world_path.c_str());
+    std::fprintf(stderr, "simulator: world file '%s': too large to load in this machine's memory\n",
+                 world_path.c_str());
     return 2;
   }
 
