@@ -27,6 +27,7 @@ CASES = {
     "x huge": ({"x": "1e300"}, "/simulator/x"),
     "odometry noise 5": ({"odom_linear_noise": "5"}, "odom_linear_noise"),
     "seed negative": ({"seed": "-3"}, "seed"),
+    "world a number": ({"world": "123"}, "/simulator/world is '123', not a name"),
 }
 
 

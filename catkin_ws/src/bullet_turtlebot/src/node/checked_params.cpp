@@ -50,4 +50,16 @@ int checked_int(const ros::NodeHandle& pnh, const std::string& name, int fallbac
   return number;
 }
 
+std::string checked_string(const ros::NodeHandle& pnh, const std::string& name, const std::string& fallback,
+                           const std::string& rule) {
+  XmlRpc::XmlRpcValue value;
+  if (!pnh.getParam(name, value)) return fallback;
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeString) {
+    refuse(pnh, name, "'" + shown(value) + "', not a name", rule);
+  }
+  const std::string text = static_cast<std::string>(value);
+  if (text.empty()) refuse(pnh, name, "empty", rule);
+  return text;
+}
+
 }  // namespace bullet_turtlebot

@@ -24,6 +24,11 @@ double checked_number(const ros::NodeHandle& pnh, const std::string& name, doubl
 int checked_int(const ros::NodeHandle& pnh, const std::string& name, int fallback, int lo, int hi,
                 const std::string& rule);
 
+// ~name as a non-empty string (`fallback` when unset): a number or a boolean given where a
+// name is asked for (`_world:=123`) is refused, not replaced by the fallback.
+std::string checked_string(const ros::NodeHandle& pnh, const std::string& name, const std::string& fallback,
+                           const std::string& rule);
+
 // A lower bound that is not itself allowed (e.g. a rate above 0): the next double above `lo`.
 inline double above(double lo) { return std::nextafter(lo, std::numeric_limits<double>::infinity()); }
 

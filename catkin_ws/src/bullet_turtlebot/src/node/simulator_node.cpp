@@ -2,8 +2,10 @@
 #include <ros/ros.h>
 #include <rosbook_env/master_watch.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <new>
@@ -17,6 +19,19 @@
 #include "ros_sim.hpp"
 
 namespace {
+
+// The world names a folder holds (its *.yaml files), sorted, comma-separated.
+std::string shipped_world_names(const std::string& worlds_dir) {
+  std::vector<std::string> names;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(worlds_dir, error)) {
+    if (entry.path().extension() == ".yaml") names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  std::string out;
+  for (const auto& name : names) out += (out.empty() ? "" : ", ") + name;
+  return out.empty() ? "none found" : out;
+}
 
 // The base, odometry and start pose, each checked (see checked_params.hpp).
 void read_base_parameters(const ros::NodeHandle& pnh, bullet_turtlebot::SimulationConfig* config,
@@ -65,16 +80,29 @@ int main(int argc, char** argv) {
   namespace bt = bullet_turtlebot;
 
   std::string world_name, worlds_dir;
-  pnh.param<std::string>("world", world_name, "playground");
-  pnh.param<std::string>("worlds_dir", worlds_dir, bt::shipped_worlds_dir());
+  try {
+    world_name = bt::checked_string(pnh, "world", "playground",
+                                    "a shipped world's name (" + shipped_world_names(bt::shipped_worlds_dir()) +
+                                        ") or a world file's path");
+    worlds_dir = bt::checked_string(pnh, "worlds_dir", bt::shipped_worlds_dir(), "a folder of world files");
+  } catch (const bt::ParameterError& e) {
+    ROS_FATAL("%s", e.what());
+    std::fprintf(stderr, "simulator: %s\n", e.what());
+    return 2;
+  }
   const std::string world_path = bt::resolve_world_path(world_name, worlds_dir);
 
   bt::WorldSpec spec;
   try {
     spec = bt::load_world_file(world_path);
   } catch (const bt::WorldFileError& e) {
-    ROS_FATAL("%s", e.what());
-    std::fprintf(stderr, "simulator: %s\n", e.what());
+    std::string message = e.what();
+    if (world_path != world_name && !std::filesystem::exists(world_path)) {
+      message += " (no world named '" + world_name + "' in " + worlds_dir + ": " + shipped_world_names(worlds_dir) +
+                 "; or give a world file's path)";
+    }
+    ROS_FATAL("%s", message.c_str());
+    std::fprintf(stderr, "simulator: %s\n", message.c_str());
     return 2;
   } catch (const std::bad_alloc&) {
     ROS_FATAL("world file '%s': too large to load in this machine's memory", world_path.c_str());
