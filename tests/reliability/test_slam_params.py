@@ -23,8 +23,11 @@ CASES = {
     "iterations 1000": ("iterations", "1000"),
     "maxRange 0": ("maxRange", "0"),
     "srr negative": ("srr", "-0.1"),
+    "particles 2.5": ("particles", "2.5"),  # was cut to 2 particles
+    "seed negative": ("seed", "-1"),  # was undefined as an unsigned seed
+    "loop_closure 5": ("loop_closure", "5"),
 }
-NODE_CASES = ["particles 0", "delta 0", "xmin above xmax", "maxRange 0"]
+NODE_CASES = ["particles 0", "delta 0", "xmin above xmax", "maxRange 0", "particles 2.5"]
 
 
 @pytest.mark.parametrize("case", sorted(CASES))
@@ -52,3 +55,13 @@ def test_slam_gmapping_refuses_a_bad_parameter_at_start_up(shared_ros, case):
     assert done.returncode == 2, done.stdout + done.stderr
     line = next(x for x in done.stderr.splitlines() if x.startswith("slam_gmapping: ~"))
     assert f"~{name} is " in line and "it must be" in line and "_NAME:=VALUE" in line, line
+
+
+def test_slam_gmapping_takes_loop_closure_true(shared_ros):
+    """~loop_closure is a switch: `_loop_closure:=true` was refused as "'' must be a number"."""
+    shared_ros.master().deleteParam("/test_slam_params", "/slam_gmapping")
+    proc = shared_ros.start(["rosrun", "gmapping_lite", "slam_gmapping", "_loop_closure:=true"])
+    shared_ros.wait_for_service("/dynamic_map", timeout=60)
+    shared_ros.stop(proc)
+    out = shared_ros.output(proc)
+    assert "loop_closure" not in out, out

@@ -3,18 +3,21 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <type_traits>
 #include <utility>
 
 namespace gmapping_lite {
 
 namespace {
 template <typename T>
-ParamEntry entry(const std::string& name, T SlamParams::*field, ParamBounds bounds = {}) {
+ParamEntry entry(const std::string& name, T SlamParams::*field, ParamBounds bounds) {
+  bounds.whole = std::is_integral_v<T>;
   return {name, [field](const SlamParams& p) { return static_cast<double>(p.*field); },
           [field](SlamParams* p, double v) { p->*field = static_cast<T>(v); }, std::move(bounds)};
 }
 template <typename T>
 ParamEntry matcher(const std::string& name, T MatcherParams::*field, ParamBounds bounds) {
+  bounds.whole = std::is_integral_v<T>;
   return {name, [field](const SlamParams& p) { return static_cast<double>(p.matcher.*field); },
           [field](SlamParams* p, double v) { p->matcher.*field = static_cast<T>(v); },
           std::move(bounds)};
@@ -48,8 +51,10 @@ const std::vector<ParamEntry>& paramTable() {
       entry("ymin", &SlamParams::ymin, {-1e6, 1e6, false, "metres"}),
       entry("xmax", &SlamParams::xmax, {-1e6, 1e6, false, "metres"}),
       entry("ymax", &SlamParams::ymax, {-1e6, 1e6, false, "metres"}),
-      entry("seed", &SlamParams::seed),  // not gmapping's: makes runs reproducible
-      entry("loop_closure", &SlamParams::loop_closure),  // not gmapping's: the back end
+      // not gmapping's: makes runs reproducible (an unsigned 32-bit seed)
+      entry("seed", &SlamParams::seed, {0, 4294967295.0, false, "a whole number in [0, 4294967295]"}),
+      // not gmapping's: the back end
+      entry("loop_closure", &SlamParams::loop_closure, {0, 1, false, "0 or 1 (false or true)"}),
       matcher("sigma", &MatcherParams::sigma, {0, 1e3, true, "metres > 0"}),
       matcher("kernelSize", &MatcherParams::kernel_size, {0, 10, false, "cells in [0, 10]"}),
       matcher("lstep", &MatcherParams::lstep, {0, 10, true, "metres in (0, 10]"}),
@@ -85,16 +90,29 @@ std::string shown(const std::string& name, double value, const std::string& rule
   out << name << " is " << value << ": it must be " << rule;
   return out.str();
 }
+
+std::string entryProblem(const ParamEntry& e, double v) {
+  const ParamBounds& b = e.bounds;
+  if (b.rule.empty()) return "";
+  const bool above_lo = b.lo_open ? v > b.lo : v >= b.lo;
+  if (!std::isfinite(v) || !above_lo || v > b.hi) return shown(e.name, v, b.rule);
+  if (b.whole && v != std::floor(v)) return shown(e.name, v, "a whole number: " + b.rule);
+  return "";
+}
 }  // namespace
+
+std::string valueProblem(const std::string& name, double value) {
+  const auto& table = paramTable();
+  const auto it = std::find_if(table.begin(), table.end(),
+                               [&](const ParamEntry& e) { return e.name == name; });
+  return it == table.end() ? "" : entryProblem(*it, value);
+}
 
 std::string paramProblem(const SlamParams& params, bool max_range_set, bool max_urange_set) {
   for (const ParamEntry& e : paramTable()) {
-    const ParamBounds& b = e.bounds;
-    if (b.rule.empty()) continue;
     if ((e.name == "maxRange" && !max_range_set) || (e.name == "maxUrange" && !max_urange_set)) continue;
-    const double v = e.get(params);
-    const bool above_lo = b.lo_open ? v > b.lo : v >= b.lo;
-    if (!std::isfinite(v) || !above_lo || v > b.hi) return shown(e.name, v, b.rule);
+    const std::string problem = entryProblem(e, e.get(params));
+    if (!problem.empty()) return problem;
   }
   if (!(params.xmin < params.xmax)) return shown("xmin", params.xmin, "below xmax");
   if (!(params.ymin < params.ymax)) return shown("ymin", params.ymin, "below ymax");

@@ -1,6 +1,7 @@
 #include "slam_gmapping_node.h"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -31,14 +32,28 @@ SlamGmappingNode::SlamGmappingNode() : private_("~"), tf_listener_(tf_buffer_) {
   warnUnusedParams();
   std::string problem;
   for (const auto& e : paramTable()) {
-    double value;
-    if (private_.getParam(e.name, value)) {
-      e.set(&options.params, value);
-    } else if (problem.empty() && private_.hasParam(e.name)) {
-      std::string text;  // set, but not a number (e.g. _delta:=abc)
-      private_.getParam(e.name, text);
-      problem = std::string(e.name) + " is '" + text + "': it must be a number";
+    XmlRpc::XmlRpcValue raw;
+    if (!private_.getParam(e.name, raw)) continue;
+    double value = 0;
+    const auto type = raw.getType();
+    if (type == XmlRpc::XmlRpcValue::TypeDouble) {
+      value = static_cast<double>(raw);
+    } else if (type == XmlRpc::XmlRpcValue::TypeInt) {
+      value = static_cast<int>(raw);
+    } else if (type == XmlRpc::XmlRpcValue::TypeBoolean && e.bounds.whole && e.bounds.hi == 1) {
+      value = static_cast<bool>(raw) ? 1 : 0;  // a switch (~loop_closure): true / false
+    } else {
+      if (problem.empty()) {  // set, but not a number (e.g. _delta:=abc)
+        std::ostringstream text;
+        if (type == XmlRpc::XmlRpcValue::TypeString) text << static_cast<std::string>(raw);
+        else raw.write(text);
+        problem = std::string(e.name) + " is '" + text.str() + "': it must be a number";
+      }
+      continue;
     }
+    // Checked before it is stored: an integer field would cut 2.5 particles to 2.
+    if (problem.empty()) problem = valueProblem(e.name, value);
+    if (problem.empty()) e.set(&options.params, value);
   }
   options.max_range_set = private_.hasParam("maxRange");
   options.max_urange_set = private_.hasParam("maxUrange");

@@ -79,6 +79,11 @@ bool parse(int argc, char** argv, Options* o, std::string* error) {
         *error = "bad --param '" + kv + "' (expected NAME=NUMBER with a slam_gmapping name)";
         return false;
       }
+      const std::string problem = valueProblem(kv.substr(0, eq), v);
+      if (!problem.empty()) {
+        *error = problem;
+        return false;
+      }
       o->max_range_set |= kv.substr(0, eq) == "maxRange";
       o->max_urange_set |= kv.substr(0, eq) == "maxUrange";
     } else if (!a.empty() && a[0] == '-') {

@@ -50,6 +50,8 @@ std::string loadTuning(const std::string& path, SlamParams* params) {
     } catch (const YAML::Exception&) {
       return path + ": " + name + " must be a number";
     }
+    const std::string problem = valueProblem(name, value);
+    if (!problem.empty()) return path + ": " + problem;
     setParam(params, name, value);
   }
   const bool max_range_set = std::count(names.begin(), names.end(), "maxRange") > 0;

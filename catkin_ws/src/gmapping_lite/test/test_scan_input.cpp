@@ -272,3 +272,17 @@ TEST(ParamTable, NamesAndDefaultsAreGmappings) {
   EXPECT_NEAR(q.matcher.max_range, 7.99, 1e-12);
   EXPECT_NEAR(q.matcher.max_urange, 7.99, 1e-12);
 }
+
+TEST(ParamTable, ValuesAreCheckedBeforeAnIntegerFieldCutsThem) {
+  // 2.5 particles would be stored as 2, a seed of -1 or 1e300 is undefined as an unsigned.
+  EXPECT_NE(valueProblem("particles", 2.5).find("particles is 2.5: it must be a whole number"), std::string::npos);
+  EXPECT_NE(valueProblem("lskip", 0.5).find("whole number"), std::string::npos);
+  EXPECT_NE(valueProblem("seed", -1).find("seed is -1"), std::string::npos);
+  EXPECT_NE(valueProblem("seed", 1e300).find("seed is 1e+300"), std::string::npos);
+  EXPECT_NE(valueProblem("loop_closure", 5).find("0 or 1"), std::string::npos);
+  EXPECT_NE(valueProblem("delta", std::nan("")).find("delta is nan"), std::string::npos);
+  EXPECT_EQ(valueProblem("particles", 30), "");
+  EXPECT_EQ(valueProblem("seed", 4294967295.0), "");
+  EXPECT_EQ(valueProblem("loop_closure", 1), "");
+  EXPECT_EQ(valueProblem("noSuchParam", 1), "");
+}

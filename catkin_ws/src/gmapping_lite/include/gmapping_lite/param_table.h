@@ -15,6 +15,7 @@ struct ParamBounds {
   double lo = 0, hi = 0;
   bool lo_open = false;  // lo itself not allowed
   std::string rule;
+  bool whole = false;  // an integer or boolean field: a fraction would be cut (2.5 particles: 2)
 };
 
 struct ParamEntry {
@@ -30,6 +31,11 @@ const std::vector<ParamEntry>& paramTable();
 
 // Set one parameter by name; false if the name is unknown.
 bool setParam(SlamParams* params, const std::string& name, double value);
+
+// The problem with giving parameter `name` the value `value`, checked before it is stored (an
+// integer field cannot hold 2.5, -1 or 1e300 to be checked afterwards): "NAME is VALUE: it
+// must be RULE", or empty when it is usable or the name is unknown.
+std::string valueProblem(const std::string& name, double value);
 
 // The first parameter the filter cannot work with, as "NAME is VALUE: it must be RULE"; empty
 // when all are usable. maxRange / maxUrange are checked only when set (see rangeDefaults).
