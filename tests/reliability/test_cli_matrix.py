@@ -2,7 +2,8 @@
 unwritable destination gives one clear line naming the bad value or the fix, a usage exit
 code, and writes nothing. Each row: (tool and arguments, exit code, text the output must hold).
 
-{tmp} is the test's folder, {nested} a YAML nested 5000 levels deep, {dead} a master URI on
+{tmp} is the test's folder, {nested} a YAML nested 5000 levels deep, {unfinished} and {noscan}
+bags (write_bags), {dead} a master URI on
 which nothing listens. No roscore is started: the rows are about what happens before one is
 needed, or without one."""
 
@@ -442,7 +443,39 @@ CASES = {
         1,
         "cannot open",
     ),
+    "slam_offline unfinished bag": (
+        ["gmapping_lite", "slam_offline", "{unfinished}", "--out", "{tmp}/m"],
+        1,
+        "`rosbag reindex BAG` rebuilds its index",
+    ),
+    "score_slam unfinished bag": (
+        ["gmapping_lite", "score_slam", "{unfinished}", "--world", "maze"],
+        1,
+        "the bag has no index (an unfinished recording?): `rosbag reindex BAG`",
+    ),
+    "slam_offline bag without scans": (
+        ["gmapping_lite", "slam_offline", "{noscan}", "--scan", "/base_scan", "--out", "{tmp}/m"],
+        1,
+        "no messages on /base_scan (its LaserScan topics: /scan; choose one with --scan TOPIC)",
+    ),
 }
+
+
+def write_bags(folder):
+    """{unfinished}: a bag as `rosbag record` leaves it when killed (its header's index
+    position still 0); {noscan}: a finished bag holding one LaserScan on /scan."""
+    import shutil
+
+    import rosbag
+    import rospy
+    from sensor_msgs.msg import LaserScan
+
+    live = rosbag.Bag(str(folder / "live.bag"), "w")
+    live.write("/scan", LaserScan(), rospy.Time(1))
+    live.flush()
+    shutil.copy(folder / "live.bag", folder / "unfinished.bag")
+    live.close()
+    (folder / "live.bag").rename(folder / "noscan.bag")
 
 
 def dead_master_uri():
@@ -458,8 +491,16 @@ def test_bad_input_is_a_clear_error_and_writes_nothing(case, tmp_path):
     nested.write_text("image: " + "[" * 5000 + "]" * 5000)
     (tmp_path / "file").write_text("a file, not a folder")
     (tmp_path / "empty").mkdir()
+    if any(a in ("{unfinished}", "{noscan}") for a in args):
+        write_bags(tmp_path)
     before = set(tmp_path.rglob("*"))
-    argv = [a.replace("{tmp}", str(tmp_path)).replace("{nested}", str(nested)) for a in args]
+    argv = [
+        a.replace("{tmp}", str(tmp_path))
+        .replace("{nested}", str(nested))
+        .replace("{unfinished}", str(tmp_path / "unfinished.bag"))
+        .replace("{noscan}", str(tmp_path / "noscan.bag"))
+        for a in args
+    ]
     env = dict(os.environ, ROS_MASTER_URI=dead_master_uri(), PYENV_VERSION="system")
     done = subprocess.run(
         without_rosrun(["rosrun", *argv], env),

@@ -114,7 +114,14 @@ int main(int argc, char** argv) {
   try {
     bag.open(o.bag, rosbag::bagmode::Read);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "slam_offline: cannot open %s: %s\n", o.bag.c_str(), e.what());
+    // A file that starts like a bag but cannot be opened is most often an unfinished
+    // recording (rosbag record killed, or still writing NAME.bag.active): name the repair.
+    char magic[13] = {};
+    std::FILE* file = std::fopen(o.bag.c_str(), "rb");
+    const bool bag_like = file && std::fread(magic, 1, 12, file) == 12 && std::string(magic) == "#ROSBAG V2.0";
+    if (file) std::fclose(file);
+    std::fprintf(stderr, "slam_offline: cannot open %s: %s%s\n", o.bag.c_str(), e.what(),
+                 bag_like ? " (an unfinished recording? `rosbag reindex BAG` rebuilds its index)" : "");
     return 1;
   }
   // Pass 1: all of tf, so each scan can be placed whatever order the bag holds it in. The
@@ -145,8 +152,18 @@ int main(int argc, char** argv) {
 
   rosbag::View scan_view(bag, rosbag::TopicQuery(std::vector<std::string>{o.scan_topic}));
   if (scan_view.size() == 0) {
-    std::fprintf(stderr, "slam_offline: %s has no messages on %s\n", o.bag.c_str(),
-                 o.scan_topic.c_str());
+    // Name the LaserScan topics the bag does hold, so a scan recorded under another name
+    // (base_scan, /robot/scan) is one --scan away.
+    std::string scans;
+    rosbag::View all(bag);
+    for (const rosbag::ConnectionInfo* c : all.getConnections()) {
+      if (c->datatype == "sensor_msgs/LaserScan" && scans.find(c->topic + ",") == std::string::npos)
+        scans += c->topic + ",";
+    }
+    if (!scans.empty()) scans.pop_back();
+    std::fprintf(stderr, "slam_offline: %s has no messages on %s%s\n", o.bag.c_str(), o.scan_topic.c_str(),
+                 scans.empty() ? " (nor any sensor_msgs/LaserScan topic: record the laser, e.g. rosbag record -O data.bag /scan /tf)"
+                               : (" (its LaserScan topics: " + scans + "; choose one with --scan TOPIC)").c_str());
     return 1;
   }
   ScanPipelineOptions options;
