@@ -58,9 +58,14 @@ LikelihoodField::LikelihoodField(const GridMap& map, double max_dist, int occupi
 }
 
 bool LikelihoodField::cellOf(double x, double y, int* col, int* row) const {
-  *col = static_cast<int>(std::floor((x - map_.origin_x) / map_.resolution));
-  *row = static_cast<int>(std::floor((y - map_.origin_y) / map_.resolution));
-  return *col >= 0 && *row >= 0 && *col < map_.width && *row < map_.height;
+  // Compared as doubles before the cast: a particle drawn from an initial pose with a huge
+  // variance (1e300) or a NaN would overflow int, which is undefined behaviour.
+  const double c = std::floor((x - map_.origin_x) / map_.resolution);
+  const double r = std::floor((y - map_.origin_y) / map_.resolution);
+  if (!(c >= 0 && r >= 0 && c < map_.width && r < map_.height)) return false;
+  *col = static_cast<int>(c);
+  *row = static_cast<int>(r);
+  return true;
 }
 
 double LikelihoodField::distance(double x, double y) const {

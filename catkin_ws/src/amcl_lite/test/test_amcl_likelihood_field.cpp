@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 #include "amcl_lite/likelihood_field.h"
 
 using amcl_lite::GridMap;
@@ -41,4 +44,15 @@ TEST(LikelihoodField, RefusesMalformedMaps) {
   m.cells.pop_back();
   EXPECT_THROW(LikelihoodField(m, 1.0), std::invalid_argument);
   EXPECT_THROW(LikelihoodField(emptyMap(4, 4), 0.0), std::invalid_argument);
+}
+
+TEST(LikelihoodField, FarAndNonFinitePointsAreOutsideTheMap) {
+  // Particles of an initial pose with a huge variance land at 1e150 m: no int overflow.
+  const LikelihoodField f(emptyMap(4, 4), 1.0);
+  for (const double v : {1e150, -1e150, 3e9, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    EXPECT_NEAR(f.distance(v, 0.05), 1.0, 1e-6) << v;
+    EXPECT_NEAR(f.distance(0.05, v), 1.0, 1e-6) << v;
+    EXPECT_FALSE(f.isFree(v, v)) << v;
+  }
+  EXPECT_TRUE(f.isFree(0.05, 0.05));
 }
