@@ -167,6 +167,11 @@ class MoveBase:
         frame = pose_stamped.header.frame_id.lstrip("/") or self.global_frame
         p = pose_stamped.pose
         x, y, yaw = p.position.x, p.position.y, yaw_of(p.orientation)
+        if not all(math.isfinite(v) for v in (x, y, yaw)):
+            return None, (
+                f"the goal's position ({x:g}, {y:g}) and orientation (yaw {yaw:g}) must be "
+                "finite numbers"
+            )
         if frame == self.global_frame:
             return (x, y, yaw), ""
         try:

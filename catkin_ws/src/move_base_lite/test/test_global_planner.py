@@ -28,6 +28,8 @@ def test_goals_in_walls_or_off_the_map_are_refused_with_a_reason():
     assert "obstacle" in in_wall.reason
     off_map = planner.plan((1.0, 0.5), (9.0, 0.5))
     assert off_map.goal_invalid and "outside the map" in off_map.reason
+    far = planner.plan((1.0, 0.5), (1e300, 0.5))  # said in a few digits, not in 300
+    assert far.goal_invalid and "goal (1e+300, 0.50) is outside the map" in far.reason
 
 
 def test_obstacles_the_scan_adds_block_the_gap():

@@ -48,3 +48,11 @@ def test_a_blocked_robot_recovers_then_gives_up():
     nav = Navigator((5.0, 0.0, 0.0))
     drive(nav, (0.0, 0.0, 0.0), straight_plan, clearance=0.2, seconds=300)
     assert nav.status == ABORTED and "recovery" in nav.text
+
+
+def test_a_goal_that_is_not_finite_is_aborted_at_once():
+    # A NaN yaw used to leave the robot turning on the spot at the goal for ever.
+    for goal in [(2.0, 1.0, math.nan), (math.inf, 1.0, 0.0)]:
+        nav = Navigator(goal)
+        drive(nav, (0.0, 0.0, 0.0), straight_plan, seconds=1.0)
+        assert nav.status == ABORTED and "is not finite" in nav.text, goal

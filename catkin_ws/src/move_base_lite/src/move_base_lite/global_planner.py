@@ -10,6 +10,11 @@ from explorer.grid import FREE, OCCUPIED, GridGeometry, classify
 from explorer.planner import distance_field, extract_path
 
 
+def _xy(point):
+    """(x, y) to the centimetre; a far-off one (1e300 from a bad goal) in a few digits."""
+    return "(" + ", ".join(f"{v:.2f}" if abs(v) < 1e9 else f"{v:.3g}" for v in point[:2]) + ")"
+
+
 @dataclass
 class CostmapParams:
     robot_radius: float = 0.18  # m: Kobuki's footprint
@@ -81,13 +86,11 @@ class GlobalPlanner:
         g = self.geometry
         goal_cell = tuple(int(v) for v in g.to_cell(*goal))
         if not g.contains(*goal_cell):
-            return PlanResult(None, f"goal ({goal[0]:.2f}, {goal[1]:.2f}) is outside the map", True)
+            return PlanResult(None, f"goal {_xy(goal)} is outside the map", True)
         if self.static_costmap.traversable[goal_cell] and not self.costmap.traversable[goal_cell]:
             # Only the scan's obstacles cover it: they may be gone (or misplaced by a poor
             # pose) next time, so this is worth a recovery and a retry, not an abort.
-            return PlanResult(
-                None, f"goal ({goal[0]:.2f}, {goal[1]:.2f}) is blocked by an obstacle the scan sees"
-            )
+            return PlanResult(None, f"goal {_xy(goal)} is blocked by an obstacle the scan sees")
         if not self.costmap.traversable[goal_cell]:
             clearance = float(self.costmap.clearance[goal_cell])
             why = (
@@ -96,19 +99,17 @@ class GlobalPlanner:
                 else f"an obstacle or closer than the robot radius "
                 f"({self.params.robot_radius:.2f} m) to one"
             )
-            return PlanResult(None, f"goal ({goal[0]:.2f}, {goal[1]:.2f}) is in {why}", True)
+            return PlanResult(None, f"goal {_xy(goal)} is in {why}", True)
         start_cell = tuple(int(v) for v in g.to_cell(*start))
         snap = max(1, math.ceil(self.params.inflation_radius / g.resolution))
         field = distance_field(self.costmap, start_cell, g.resolution, snap_cells=snap)
         if field is None:
-            return PlanResult(
-                None, f"the robot at ({start[0]:.2f}, {start[1]:.2f}) is not in free space"
-            )
+            return PlanResult(None, f"the robot at {_xy(start)} is not in free space")
         cells = extract_path(field, goal_cell)
         if cells is None:
             return PlanResult(
                 None,
-                f"no path from ({start[0]:.2f}, {start[1]:.2f}) to ({goal[0]:.2f}, {goal[1]:.2f})",
+                f"no path from {_xy(start)} to {_xy(goal)}",
             )
         xs, ys = g.to_world(cells[:, 0], cells[:, 1])
         path = np.column_stack([xs, ys])

@@ -53,6 +53,10 @@ class Navigator:
         self.recovery = None
         self.stuck = StuckMonitor()
         self.events = []  # progress messages for the owner to log
+        if not all(math.isfinite(v) for v in goal):
+            # A NaN yaw would never be within the yaw tolerance: the robot would turn on
+            # the spot for ever and the goal never end.
+            self._abort(f"the goal ({', '.join(f'{v:g}' for v in goal)}) is not finite")
 
     def step(self, now, pose, clearance, plan, blocked=None):
         """Command for this cycle. `clearance`: free distance (m) ahead of the robot's
