@@ -84,7 +84,9 @@ class GlobalPlanner:
     def plan(self, start, goal):
         """A PlanResult from `start` (x, y) to `goal` (x, y) in the map frame."""
         g = self.geometry
-        goal_cell = tuple(int(v) for v in g.to_cell(*goal))
+        # Far beyond any map (1e9 m), or NaN: outside, said before the cell index overflows.
+        far = not all(abs(v) < 1e9 for v in goal[:2])
+        goal_cell = (-1, -1) if far else tuple(int(v) for v in g.to_cell(*goal))
         if not g.contains(*goal_cell):
             return PlanResult(None, f"goal {_xy(goal)} is outside the map", True)
         if self.static_costmap.traversable[goal_cell] and not self.costmap.traversable[goal_cell]:
