@@ -169,13 +169,15 @@ class AmclNode {
       start.initial_pose_a = e.mean.theta;
     }
     filter_ = std::make_unique<ParticleFilter>(start, field_, seed_);
-    if (!insideMap(map, start.initial_pose_x, start.initial_pose_y)) {
-      ROS_ERROR("amcl_lite: the initial pose (%g, %g) is outside the map (x %.2f to %.2f, y %.2f "
-                "to %.2f); spreading the particles over the map's free space instead (global "
-                "localization). Set ~initial_pose_x/y, or use rviz's 2D Pose Estimate",
-                start.initial_pose_x, start.initial_pose_y, map.origin_x,
-                map.origin_x + map.width * map.resolution, map.origin_y,
-                map.origin_y + map.height * map.resolution);
+    map_extent_ = map;
+    map_extent_.cells.clear();  // the bounds are all onInitialPose needs
+    const std::string problem =
+        initialPoseProblem(map, start.initial_pose_x, start.initial_pose_y, start.initial_cov_xx, start.initial_cov_yy);
+    if (!problem.empty()) {
+      ROS_ERROR("amcl_lite: %s; spreading the particles over the map's free space "
+                "instead (global localization). Set ~initial_pose_x/y and ~initial_cov_xx/yy, or use "
+                "rviz's 2D Pose Estimate",
+                problem.c_str());
       filter_->initGlobal();
     }
     last_odom_.reset();
@@ -183,11 +185,6 @@ class AmclNode {
     ROS_INFO("amcl_lite: map %dx%d at %.3f m, %zu particles around (%.2f, %.2f, %.2f)", map.width,
              map.height, map.resolution, filter_->particles().size(), start.initial_pose_x,
              start.initial_pose_y, start.initial_pose_a);
-  }
-
-  static bool insideMap(const GridMap& map, double x, double y) {
-    return x >= map.origin_x && x <= map.origin_x + map.width * map.resolution &&
-           y >= map.origin_y && y <= map.origin_y + map.height * map.resolution;
   }
 
   void onInitialPose(const geometry_msgs::PoseWithCovarianceStampedConstPtr& msg) {
@@ -213,6 +210,13 @@ class AmclNode {
       ROS_WARN("amcl_lite: ignoring an initial pose that is not finite or whose covariance is "
                "negative or not finite: (%g, %g, %g), variances %g %g %g",
                pose.x, pose.y, pose.theta, c[0], c[7], c[35]);
+      return;
+    }
+    const std::string problem = initialPoseProblem(map_extent_, pose.x, pose.y, c[0], c[7]);
+    if (!problem.empty()) {
+      ROS_WARN("amcl_lite: ignoring an initial pose: %s; to spread the particles over the whole map, "
+               "call `rosservice call /global_localization`",
+               problem.c_str());
       return;
     }
     filter_->initGaussian(pose, c[0], c[7], c[35], c[1]);
@@ -328,6 +332,7 @@ class AmclNode {
   bool use_map_topic_ = false, tf_broadcast_ = true, force_update_ = true;
   uint32_t seed_ = 0;
   std::shared_ptr<const LikelihoodField> field_;
+  GridMap map_extent_;  // the current map's bounds (no cells), for checking initial poses
   std::unique_ptr<ParticleFilter> filter_;
   std::optional<Pose2> last_odom_, map_odom_;
 };

@@ -1,6 +1,7 @@
 #include "amcl_lite/likelihood_field.h"
 
 #include <cmath>
+#include <cstdio>
 #include <queue>
 #include <stdexcept>
 
@@ -77,6 +78,26 @@ double LikelihoodField::distance(double x, double y) const {
 bool LikelihoodField::isFree(double x, double y) const {
   int c, r;
   return cellOf(x, y, &c, &r) && free_[static_cast<size_t>(r) * map_.width + c];
+}
+
+std::string initialPoseProblem(const GridMap& map, double x, double y, double cov_xx, double cov_yy) {
+  const double x1 = map.origin_x + map.width * map.resolution;
+  const double y1 = map.origin_y + map.height * map.resolution;
+  const double diagonal = std::hypot(map.width * map.resolution, map.height * map.resolution);
+  char text[320];
+  if (!(x >= map.origin_x && x <= x1 && y >= map.origin_y && y <= y1)) {
+    std::snprintf(text, sizeof text, "the initial pose (%g, %g) is off the map (x %.2f to %.2f, y %.2f to %.2f)", x, y,
+                  map.origin_x, x1, map.origin_y, y1);
+    return text;
+  }
+  const double sx = std::sqrt(cov_xx), sy = std::sqrt(cov_yy);
+  if (!(sx <= diagonal && sy <= diagonal)) {
+    std::snprintf(text, sizeof text,
+                  "the initial pose's spread (standard deviations %g, %g m) is wider than the map's diagonal (%.1f m)", sx, sy,
+                  diagonal);
+    return text;
+  }
+  return "";
 }
 
 }  // namespace amcl_lite

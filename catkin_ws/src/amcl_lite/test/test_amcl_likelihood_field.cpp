@@ -56,3 +56,14 @@ TEST(LikelihoodField, FarAndNonFinitePointsAreOutsideTheMap) {
   }
   EXPECT_TRUE(f.isFree(0.05, 0.05));
 }
+
+TEST(LikelihoodField, AnInitialPoseMustLieOnTheMapAndSpreadLessThanIt) {
+  GridMap m = emptyMap(40, 30);  // 4 m x 3 m: a 5 m diagonal
+  EXPECT_EQ(amcl_lite::initialPoseProblem(m, 1.0, 1.0, 0.25, 0.25), "");
+  EXPECT_NE(amcl_lite::initialPoseProblem(m, 1e6, 1.0, 0.25, 0.25).find("is off the map (x 0.00 to 4.00"),
+            std::string::npos);
+  EXPECT_NE(amcl_lite::initialPoseProblem(m, 1.0, 1.0, 1e300, 0.25).find("wider than the map's diagonal (5.0 m)"),
+            std::string::npos);
+  EXPECT_NE(amcl_lite::initialPoseProblem(m, 1.0, 1.0, 0.25, 26.0).find("wider"), std::string::npos);
+  EXPECT_NE(amcl_lite::initialPoseProblem(m, std::nan(""), 1.0, 0.25, 0.25), "");
+}

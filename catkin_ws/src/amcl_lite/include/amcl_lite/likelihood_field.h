@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace amcl_lite {
@@ -17,6 +18,13 @@ struct GridMap {
   int height = 0;
   std::vector<int8_t> cells;
 };
+
+// Why an initial pose (mean x, y; variances cov_xx, cov_yy) is no pose on `map`, or "" when
+// it is one: its mean must lie on the map and its spread be narrower than the map's diagonal.
+// Wider, nearly every particle lands off the map and the estimate runs away (a variance of
+// 1e300 put amcl's pose at 1e147 m for good); global localization is what spreads particles
+// over the whole map.
+std::string initialPoseProblem(const GridMap& map, double x, double y, double cov_xx, double cov_yy);
 
 class LikelihoodField {
  public:
