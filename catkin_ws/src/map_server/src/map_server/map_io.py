@@ -40,6 +40,7 @@ from map_server.map_yaml import (
     REQUIRED_KEYS,
     MapConfig,
     check_mode,
+    check_resolution,
     check_thresholds,
     map_yaml_text,
     number,
@@ -135,6 +136,7 @@ def load_image_map(image_path, resolution, origin=(0.0, 0.0, 0.0), negate=False)
     resolution = number(resolution, "resolution", where)
     if resolution <= 0:
         raise MapYamlError(f"{where}: resolution must be positive, got {resolution}")
+    check_resolution(resolution, where)
     origin = tuple(number(v, "origin", where) for v in origin)
     config = MapConfig(
         image=Path(image_path), resolution=resolution, origin=origin, negate=bool(negate)
