@@ -26,7 +26,13 @@ def test_a_world_without_start_starts_at_the_origin(tmp_path):
 
 @pytest.mark.parametrize(
     "text, message",
-    [("start: [1, 2]\n", "'start' must be [x, y, yaw]"), ("start: [a\n", "not YAML")],
+    [
+        ("start: [1]\n", "'start' must be [x, y] or [x, y, yaw]"),
+        ("start: [1e300, 0, 0]\n", "metres within 1e6 of the origin"),
+        ("start: [true, 0, 0]\n", "'start' must be"),
+        ("start: [a\n", "not YAML"),
+        pytest.param("start: " + "[" * 1000 + "]" * 1000 + "\n", "nested too deeply", id="nested"),
+    ],
 )
 def test_bad_world_files_are_named(tmp_path, text, message):
     world = tmp_path / "bad.yaml"
@@ -46,3 +52,14 @@ def test_the_script_prints_one_component():
     assert (done.returncode, done.stdout.strip()) == (0, "-8.5")
     done = subprocess.run([str(script), "nope", "yaw"], capture_output=True, text=True, env=env)
     assert done.returncode == 1 and "world_start.py: cannot read world file" in done.stderr
+
+
+def test_the_start_forms_the_simulator_takes(tmp_path):
+    world = tmp_path / "w.yaml"
+    world.write_text("start: [1e1, -2]\n")  # [x, y], and 1e1 a number as in yaml-cpp
+    assert start_pose(str(world), WORLDS) == (10.0, -2.0, 0.0)
+
+
+def test_a_device_is_refused_not_read():
+    with pytest.raises(ValueError, match="/dev/zero: not a regular file"):
+        start_pose("/dev/zero", WORLDS)

@@ -6,6 +6,8 @@ world in `worlds_dir`. A world file without `start` starts the robot at the orig
 """
 
 import math
+import re
+import stat
 from pathlib import Path
 
 import yaml
@@ -17,20 +19,47 @@ def world_path(world, worlds_dir):
     return Path(worlds_dir) / f"{world}.yaml"
 
 
+class _Loader(yaml.SafeLoader):
+    """Reads `1e1` as a number, as the simulator's yaml-cpp does (YAML 1.1 floats need a dot)."""
+
+
+_Loader.add_implicit_resolver(
+    "tag:yaml.org,2002:float",
+    re.compile(r"^[-+]?(?:[0-9][0-9_]*)(?:\.[0-9_]*)?[eE][-+]?[0-9]+$"),
+    list("-+0123456789"),
+)
+
+
 def start_pose(world, worlds_dir):
-    """(x, y, yaw) of the world's start. Raises ValueError naming the file and the fix."""
+    """(x, y, yaw) of the world's start. Raises ValueError naming the file and the fix.
+
+    As the simulator (world_spec.cpp): `start` is [x, y] or [x, y, yaw], metres within 1e6
+    of the origin, a yaw within 1000 rad."""
     path = world_path(world, worlds_dir)
     try:
-        spec = yaml.safe_load(path.read_text())
+        if not stat.S_ISREG(path.stat().st_mode):  # /dev/zero: read until memory runs out
+            raise ValueError(f"world file {path}: not a regular file; give a world YAML file")
+        spec = yaml.load(path.read_text(), Loader=_Loader)
     except OSError as err:
         raise ValueError(f"cannot read world file {path}: {err.strerror}") from err
     except yaml.YAMLError as err:
         raise ValueError(f"{path}: not YAML ({err})") from err
+    except RecursionError:  # PyYAML recurses once per nesting level
+        raise ValueError(f"{path}: nested too deeply to be a world file") from None
+    except UnicodeDecodeError:
+        raise ValueError(f"{path}: not a text file; give a world YAML file") from None
     start = (spec or {}).get("start", [0.0, 0.0, 0.0]) if isinstance(spec, dict) else None
     if (
         not isinstance(start, list)
-        or len(start) != 3
-        or not all(isinstance(v, (int, float)) and math.isfinite(v) for v in start)
+        or len(start) not in (2, 3)
+        or not all(
+            isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+            for v in start
+        )
+        or not all(abs(v) <= limit for v, limit in zip(start, (1e6, 1e6, 1e3), strict=False))
     ):
-        raise ValueError(f"{path}: 'start' must be [x, y, yaw] in metres and radians")
-    return tuple(float(v) for v in start)
+        raise ValueError(
+            f"{path}: 'start' must be [x, y] or [x, y, yaw]: metres within 1e6 of the origin "
+            "and radians"
+        )
+    return tuple(float(v) for v in start) + ((0.0,) if len(start) == 2 else ())
