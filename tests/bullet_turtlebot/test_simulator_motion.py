@@ -153,3 +153,7 @@ def test_set_pose_teleports_and_refuses_obstacles(ros, tmp_path):
     ros.wait_for(lambda: "inside an obstacle" in ros.output(sim), 60, "a warning")
     ros.stop(teleport)
     assert last_pose(ros)[:2] == (1.0, 2.0)
+    teleport = ros.start([*pub, "{x: 1.0e+300, y: 0.0, theta: 0.0}"])  # beyond Bullet's reach
+    ros.wait_for(lambda: "within 1e6 of the origin" in ros.output(sim), 60, "a warning")
+    ros.stop(teleport)
+    assert last_pose(ros)[:2] == (1.0, 2.0)

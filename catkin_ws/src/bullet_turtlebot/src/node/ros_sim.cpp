@@ -269,6 +269,13 @@ void RosSimulator::on_set_pose(const geometry_msgs::Pose2D& msg) {
     ROS_WARN("~set_pose: ignoring a non-finite pose");
     return;
   }
+  // The ~x / ~y rule: Bullet's single precision cannot place the robot farther than 1e6 m.
+  if (std::abs(msg.x) > 1e6 || std::abs(msg.y) > 1e6 || std::abs(msg.theta) > 1e3) {
+    ROS_WARN("~set_pose: ignoring (%g, %g, %g): x and y must be metres within 1e6 of the origin, "
+             "theta radians within 1000",
+             msg.x, msg.y, msg.theta);
+    return;
+  }
   if (!sim_.teleport(Pose2D{msg.x, msg.y, msg.theta})) {
     ROS_WARN("~set_pose: (%g, %g) is inside an obstacle; the robot stays where it is", msg.x, msg.y);
   }
