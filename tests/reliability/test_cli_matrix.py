@@ -453,6 +453,16 @@ CASES = {
         1,
         "cannot open",
     ),
+    "slam_offline out in a missing folder": (
+        ["gmapping_lite", "slam_offline", "{noscan}", "--out", "{tmp}/no/m"],
+        1,
+        "folder {tmp}/no does not exist (create it with: mkdir -p",
+    ),
+    "slam_offline trajectory under a file": (
+        ["gmapping_lite", "slam_offline", "{noscan}", "--trajectory", "{tmp}/file/t.csv"],
+        1,
+        "{tmp}/file is a file, not a folder",
+    ),
     "slam_offline unfinished bag": (
         ["gmapping_lite", "slam_offline", "{unfinished}", "--out", "{tmp}/m"],
         1,

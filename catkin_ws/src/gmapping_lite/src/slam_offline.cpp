@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <utility>
@@ -97,6 +98,7 @@ bool parse(int argc, char** argv, Options* o, std::string* error) {
     }
   }
   if (o->bag.empty()) *error = "no bag given";
+  if (error->empty() && o->out.empty()) *error = "--out needs a base name, e.g. --out mymap";
   if (error->empty()) *error = paramProblem(o->params, o->max_range_set, o->max_urange_set);
   return error->empty();
 }
@@ -109,6 +111,20 @@ int main(int argc, char** argv) {
   if (!parse(argc, argv, &o, &error)) return usage(error.c_str());
   ros::Time::init();
   const auto wall_start = std::chrono::steady_clock::now();
+  // The outputs' folders are checked before the bag is read: a long bag's SLAM would
+  // otherwise be run to the end only to find nowhere to write it.
+  for (const std::string& target : {o.out + ".pgm", o.trajectory}) {
+    const std::filesystem::path folder = std::filesystem::path(target).parent_path();
+    if (target.empty() || folder.empty() || std::filesystem::is_directory(folder)) continue;
+    if (std::filesystem::exists(folder)) {
+      std::fprintf(stderr, "slam_offline: cannot write %s: %s is a file, not a folder\n", target.c_str(),
+                   folder.c_str());
+    } else {
+      std::fprintf(stderr, "slam_offline: cannot write %s: folder %s does not exist (create it with: mkdir -p '%s')\n",
+                   target.c_str(), folder.c_str(), folder.c_str());
+    }
+    return 1;
+  }
 
   rosbag::Bag bag;
   try {
