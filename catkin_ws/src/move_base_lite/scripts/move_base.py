@@ -26,7 +26,12 @@ from geometry_msgs.msg import PoseStamped, Twist  # noqa: E402
 from move_base_lite.global_planner import CostmapParams, GlobalPlanner  # noqa: E402
 from move_base_lite.navigator import ACTIVE, SUCCEEDED, Navigator, NavigatorParams  # noqa: E402
 from move_base_lite.obstacle_layer import ObstacleLayer, scan_endpoints  # noqa: E402
-from move_base_msgs.msg import MoveBaseAction, MoveBaseActionGoal, MoveBaseResult  # noqa: E402
+from move_base_msgs.msg import (  # noqa: E402
+    MoveBaseAction,
+    MoveBaseActionGoal,
+    MoveBaseFeedback,
+    MoveBaseResult,
+)
 from nav_msgs.msg import OccupancyGrid  # noqa: E402
 from nav_msgs.msg import Path as PathMsg
 from nav_msgs.srv import GetPlan, GetPlanResponse  # noqa: E402
@@ -255,6 +260,8 @@ class MoveBase:
                 return True
             pose = self.robot_pose()
             if pose is not None:
+                # As move_base: the pose this cycle decides on, as the goal's feedback.
+                self.publish_feedback(pose)
                 now = rospy.get_time()
                 with self.lock:
                     clearance = self.clearance
@@ -294,6 +301,14 @@ class MoveBase:
         self.send(0.0, 0.0)
 
     # -- outputs -------------------------------------------------------------------
+    def publish_feedback(self, pose):
+        feedback = MoveBaseFeedback()
+        feedback.base_position.header.stamp = rospy.Time.now()
+        feedback.base_position.header.frame_id = self.global_frame
+        feedback.base_position.pose.position.x, feedback.base_position.pose.position.y = pose[:2]
+        set_yaw(feedback.base_position.pose.orientation, pose[2])
+        self.server.publish_feedback(feedback)
+
     def publish_plan(self, path, goal):
         msg = PathMsg()
         msg.header.stamp = rospy.Time.now()
