@@ -236,6 +236,9 @@ void ParticleFilter::closeLoop(const std::vector<const TrajectoryNode*>& chain,
     p.trajectory = last;
     p.log_weight = p.weight_sum = 0.0;
     p.drift_xy2 = p.drift_theta2 = 0.0;
+    for (int i = 0; i < 5; ++i)
+      for (int j = 0; j < 5; ++j)
+        if (i < 3 || j < 3) p.covariance.m[i][j] = 0.0;
   }
   report->map_rebuilt = true;
 }
@@ -259,6 +262,10 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
       p.pose = odom;
       p.map = first;
       p.trajectory = root;
+      // Odometry's scales are known as well as the motion model knows a metre's travel
+      // (srr, a fraction of the distance) and a radian's turn (stt).
+      p.covariance = Covariance::diagonal(0, 0, 0, params_.motion.srr * params_.motion.srr,
+                                          params_.motion.stt * params_.motion.stt);
     }
     initialized_ = true;
     last_odom_ = previous_odom_ = odom;
@@ -297,16 +304,21 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
   for (const auto& q : points.points) mean_range += q.beams * std::hypot(q.hx, q.hy);
   mean_range = points.beams > 0.0 ? mean_range / points.beams : 0.0;
   for (auto& p : particles_) {
-    // The prior: this increment's spread plus what odometry may have drifted since a scan
-    // last placed the particle (variances add).
-    const Pose2 predicted = p.pose * inc;
-    const OdometryPrior prior{std::sqrt(increment_prior.sigma_xy * increment_prior.sigma_xy +
-                                        p.drift_xy2),
-                              std::sqrt(increment_prior.sigma_theta *
-                                            increment_prior.sigma_theta +
-                                        p.drift_theta2)};
-    // gmapping's proposal: the match climbs from a sample of the motion model.
-    const Pose2 sample = motion_.sample(p.pose, last_odom_, odom, rng_);
+    // Odometry's increment as this particle's estimate of its scales corrects it.
+    const Pose2 predicted = predict(p.pose, inc, p.scale);
+    // The match's prior: this increment's spread plus what odometry may have drifted since a
+    // scan last placed the particle (variances add).
+    const OdometryPrior prior{
+        std::sqrt(increment_prior.sigma_xy * increment_prior.sigma_xy + p.drift_xy2),
+        std::sqrt(increment_prior.sigma_theta * increment_prior.sigma_theta + p.drift_theta2)};
+    // The pose's covariance relative to the map, carried forward and grown by the increment.
+    const Covariance predicted_covariance =
+        propagate(p.covariance, p.pose, inc, increment_prior.sigma_xy * increment_prior.sigma_xy,
+                  increment_prior.sigma_theta * increment_prior.sigma_theta, p.scale);
+    // gmapping's proposal: the match climbs from a sample of the motion model (its noise about
+    // the unscaled prediction, applied to the scaled one).
+    const Pose2 sample =
+        predicted * (p.pose * inc).inverse() * motion_.sample(p.pose, last_odom_, odom, rng_);
     matcher_.prepare(p.map, sample, points);
     Pose2 corrected;
     double score = matcher_.optimizeFrom(sample, predicted, points, &corrected, prior);
@@ -314,7 +326,9 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
         points.points.size() >= 3)
       score = rescue(p.map, predicted, points, prior, score, &corrected);
     if (score > params_.minimum_score) {
-      p.pose = corrected;
+      // The match, weighed per map cell, against the prediction and its carried covariance.
+      p.pose = fuse(predicted, predicted_covariance, corrected,
+                    matcher_.calibratedInformation(corrected, points), &p.covariance, &p.scale);
       p.drift_xy2 = p.drift_theta2 = 0.0;
       p.placed = true;
     } else {
@@ -322,6 +336,7 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
       // would tell the samples apart), and the spread is carried to the next match.
       ++report.failed_matches;
       p.pose = predicted;
+      p.covariance = predicted_covariance;
       p.drift_xy2 = prior.sigma_xy * prior.sigma_xy;
       p.drift_theta2 = prior.sigma_theta * prior.sigma_theta;
       // Its scan is drawn if the pose is known to a cell at the scan's typical range, or if
