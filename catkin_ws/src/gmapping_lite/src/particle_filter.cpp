@@ -236,8 +236,8 @@ void ParticleFilter::closeLoop(const std::vector<const TrajectoryNode*>& chain,
     p.trajectory = last;
     p.log_weight = p.weight_sum = 0.0;
     p.drift_xy2 = p.drift_theta2 = 0.0;
-    for (int i = 0; i < 5; ++i)
-      for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < kStates; ++i)
+      for (int j = 0; j < kStates; ++j)
         if (i < 3 || j < 3) p.covariance.m[i][j] = 0.0;
   }
   report->map_rebuilt = true;
@@ -264,8 +264,13 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
       p.trajectory = root;
       // Odometry's scales are known as well as the motion model knows a metre's travel
       // (srr, a fraction of the distance) and a radian's turn (stt).
-      p.covariance = Covariance::diagonal(0, 0, 0, params_.motion.srr * params_.motion.srr,
-                                          params_.motion.stt * params_.motion.stt);
+      // The match's pulls along the step: unknown (sd 1: end points in unmapped space may pull
+      // the match back by up to the whole step) and turn (sd lsigma per angularUpdate: a turn
+      // may misplace the match by up to one observation's spread).
+      const double turn_sd = params_.matcher.lsigma / std::max(1e-3, params_.angular_update);
+      p.covariance =
+          Covariance::diagonal(0, 0, 0, params_.motion.srr * params_.motion.srr,
+                               params_.motion.stt * params_.motion.stt, 1.0, turn_sd * turn_sd);
     }
     initialized_ = true;
     last_odom_ = previous_odom_ = odom;
@@ -327,8 +332,23 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
       score = rescue(p.map, predicted, points, prior, score, &corrected);
     if (score > params_.minimum_score) {
       // The match, weighed per map cell, against the prediction and its carried covariance.
+      // The match's own pulls act along the step (the heading for a turn on the spot), with
+      // the step's length times the share of end points in space the particle's map has not
+      // seen, and with its turn.
+      MatchBiasRegressors regressors;
+      const double c = std::cos(p.pose.theta), s = std::sin(p.pose.theta);
+      const double tx = c * inc.x - s * inc.y, ty = s * inc.x + c * inc.y;
+      const double len = std::hypot(tx, ty);
+      regressors.ux = len > 1e-6 ? tx / len : std::cos(predicted.theta);
+      regressors.uy = len > 1e-6 ? ty / len : std::sin(predicted.theta);
+      int matched = 0, contradicting = 0;
+      matcher_.agreement(predicted, points, &matched, &contradicting);
+      const double n = std::max<double>(1.0, static_cast<double>(points.points.size()));
+      regressors.unknown_step = len * (1.0 - (matched + contradicting) / n);
+      regressors.turn = std::fabs(inc.theta);
       p.pose = fuse(predicted, predicted_covariance, corrected,
-                    matcher_.calibratedInformation(corrected, points), &p.covariance, &p.scale);
+                    matcher_.calibratedInformation(corrected, points), &p.covariance, &p.scale,
+                    &regressors);
       p.drift_xy2 = p.drift_theta2 = 0.0;
       p.placed = true;
     } else {

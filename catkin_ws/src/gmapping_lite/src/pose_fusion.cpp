@@ -6,19 +6,19 @@
 namespace gmapping_lite {
 
 namespace {
-using Matrix5 = Eigen::Matrix<double, 5, 5>;
+using Matrix5 = Eigen::Matrix<double, kStates, kStates>;
 
 Matrix5 toEigen(const Covariance& c) {
   Matrix5 e;
-  for (int i = 0; i < 5; ++i)
-    for (int j = 0; j < 5; ++j) e(i, j) = c.m[i][j];
+  for (int i = 0; i < kStates; ++i)
+    for (int j = 0; j < kStates; ++j) e(i, j) = c.m[i][j];
   return e;
 }
 
 Covariance symmetric(const Matrix5& e) {
   Covariance c;
-  for (int i = 0; i < 5; ++i)
-    for (int j = 0; j < 5; ++j) c.m[i][j] = 0.5 * (e(i, j) + e(j, i));
+  for (int i = 0; i < kStates; ++i)
+    for (int j = 0; j < kStates; ++j) c.m[i][j] = 0.5 * (e(i, j) + e(j, i));
   return c;
 }
 }  // namespace
@@ -49,7 +49,8 @@ Covariance propagate(const Covariance& cov, const Pose2& pose, const Pose2& incr
 }
 
 Pose2 fuse(const Pose2& predicted, const Covariance& prior, const Pose2& measured,
-           const Information& info, Covariance* posterior, OdometryScale* scale) {
+           const Information& info, Covariance* posterior, OdometryScale* scale,
+           const MatchBiasRegressors* bias) {
   // The measurement sees the pose only (H = [1 0]). Gain K = P H' (H P H' + I^-1)^-1 =
   // P H' (1 + I H P H')^-1 I: only 1 + I H P H' is inverted, and its eigenvalues are at least 1
   // (I H P H' is similar to a positive semi-definite matrix).
@@ -57,22 +58,37 @@ Pose2 fuse(const Pose2& predicted, const Covariance& prior, const Pose2& measure
   Eigen::Matrix3d i;
   for (int r = 0; r < 3; ++r)
     for (int k = 0; k < 3; ++k) i(r, k) = info.m[r][k];
-  const Eigen::Matrix3d a = Eigen::Matrix3d::Identity() + i * p.topLeftCorner<3, 3>();
+  // H = [1 0 h]: the match sees the pose plus its own pulls along the step.
+  Eigen::Matrix<double, 3, kStates> h = Eigen::Matrix<double, 3, kStates>::Zero();
+  h.leftCols<3>() = Eigen::Matrix3d::Identity();
+  double pull_x = 0.0, pull_y = 0.0;
+  if (bias && scale) {
+    h(0, 5) = bias->ux * bias->unknown_step;
+    h(1, 5) = bias->uy * bias->unknown_step;
+    h(0, 6) = bias->ux * bias->turn;
+    h(1, 6) = bias->uy * bias->turn;
+    pull_x = h(0, 5) * scale->unknown_pull + h(0, 6) * scale->turn_pull;
+    pull_y = h(1, 5) * scale->unknown_pull + h(1, 6) * scale->turn_pull;
+  }
+  const Eigen::Matrix<double, kStates, 3> pht = p * h.transpose();
+  const Eigen::Matrix3d hph = h * pht;
+  const Eigen::Matrix3d a = Eigen::Matrix3d::Identity() + i * hph;
   const Eigen::FullPivLU<Eigen::Matrix3d> lu(a);
   if (!lu.isInvertible()) {
     *posterior = prior;
     return predicted;
   }
-  const Eigen::Matrix<double, 5, 3> gain = p.leftCols<3>() * lu.solve(i);
-  const Eigen::Vector3d innovation(measured.x - predicted.x, measured.y - predicted.y,
+  const Eigen::Matrix<double, kStates, 3> gain = pht * lu.solve(i);
+  const Eigen::Vector3d innovation(measured.x - predicted.x - pull_x,
+                                   measured.y - predicted.y - pull_y,
                                    normalizeAngle(measured.theta - predicted.theta));
-  const Eigen::Matrix<double, 5, 1> step = gain * innovation;
-  Matrix5 kh = Matrix5::Zero();
-  kh.leftCols<3>() = gain;
-  *posterior = symmetric((Matrix5::Identity() - kh) * p);
+  const Eigen::Matrix<double, kStates, 1> step = gain * innovation;
+  *posterior = symmetric((Matrix5::Identity() - gain * h) * p);
   if (scale) {
     scale->distance += step(3);
     scale->rotation += step(4);
+    scale->unknown_pull += step(5);
+    scale->turn_pull += step(6);
   }
   return Pose2(predicted.x + step(0), predicted.y + step(1),
                normalizeAngle(predicted.theta + step(2)));

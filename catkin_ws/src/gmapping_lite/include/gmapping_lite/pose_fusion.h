@@ -21,20 +21,36 @@ namespace gmapping_lite {
 // odometry's.
 struct OdometryScale {
   double distance = 1.0, rotation = 1.0;
+  // The scan match's own bias along the step, so that it is not taken for odometry's scale: `unknown_pull` metres per metre of step and unit share of end points in unmapped
+  // space, `turn_pull` metres per radian of the step's turn.
+  double unknown_pull = 0.0, turn_pull = 0.0;
 };
 
-// A symmetric covariance over (x, y, theta, distance scale, rotation scale), world frame (m^2,
-// m rad, rad^2, ...). With the scales' rows zero it is the pose's 3x3 covariance alone.
-struct Covariance {
-  double m[5][5] = {};
+// Where the match's bias acts in this update: the step's direction (world, unit) and the
+// regressors of the two pulls (step length times the unknown share; |turn|).
+struct MatchBiasRegressors {
+  double ux = 0.0, uy = 0.0;
+  double unknown_step = 0.0, turn = 0.0;
+};
 
-  static Covariance diagonal(double xx, double yy, double tt, double dd = 0.0, double rr = 0.0) {
+constexpr int kStates = 7;  // x, y, theta, distance scale, rotation scale, the two pulls
+
+// A symmetric covariance over (x, y, theta, distance scale, rotation scale, unknown pull, turn
+// pull), world frame (m^2, m rad, rad^2, ...). With the extra rows zero it is the pose's 3x3
+// covariance alone.
+struct Covariance {
+  double m[kStates][kStates] = {};
+
+  static Covariance diagonal(double xx, double yy, double tt, double dd = 0.0, double rr = 0.0,
+                             double uu = 0.0, double vv = 0.0) {
     Covariance c;
     c.m[0][0] = xx;
     c.m[1][1] = yy;
     c.m[2][2] = tt;
     c.m[3][3] = dd;
     c.m[4][4] = rr;
+    c.m[5][5] = uu;
+    c.m[6][6] = vv;
     return c;
   }
   // The position's variance per axis (half the trace of the xy block) and the heading's.
@@ -57,7 +73,10 @@ Covariance propagate(const Covariance& cov, const Pose2& pose, const Pose2& incr
 // covariance; `scale`, when given, takes its share of the correction. Computed without
 // inverting `prior` or `info`, so either may be singular (a prediction known exactly, a scan
 // that pins nothing).
+// `bias`, when given, says where the match's own pulls (the scale's last two states) act in
+// this update: the match is then a measurement of the pose plus those pulls.
 Pose2 fuse(const Pose2& predicted, const Covariance& prior, const Pose2& measured,
-           const Information& info, Covariance* posterior, OdometryScale* scale = nullptr);
+           const Information& info, Covariance* posterior, OdometryScale* scale = nullptr,
+           const MatchBiasRegressors* bias = nullptr);
 
 }  // namespace gmapping_lite
