@@ -236,6 +236,9 @@ void ParticleFilter::closeLoop(const std::vector<const TrajectoryNode*>& chain,
     p.trajectory = last;
     p.log_weight = p.weight_sum = 0.0;
     p.drift_xy2 = p.drift_theta2 = 0.0;
+    for (int i = 0; i < kStates; ++i)
+      for (int j = 0; j < kStates; ++j)
+        if (i < 3 || j < 3) p.covariance.m[i][j] = 0.0;
   }
   report->map_rebuilt = true;
 }
@@ -259,6 +262,15 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
       p.pose = odom;
       p.map = first;
       p.trajectory = root;
+      // Odometry's scales are known as well as the motion model knows a metre's travel
+      // (srr, a fraction of the distance) and a radian's turn (stt).
+      // The match's pulls along the step: unknown (sd 1: end points in unmapped space may pull
+      // the match back by up to the whole step) and turn (sd lsigma per angularUpdate: a turn
+      // may misplace the match by up to one observation's spread).
+      const double turn_sd = params_.matcher.lsigma / std::max(1e-3, params_.angular_update);
+      p.covariance =
+          Covariance::diagonal(0, 0, 0, params_.motion.srr * params_.motion.srr,
+                               params_.motion.stt * params_.motion.stt, 1.0, turn_sd * turn_sd);
     }
     initialized_ = true;
     last_odom_ = previous_odom_ = odom;
@@ -297,16 +309,21 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
   for (const auto& q : points.points) mean_range += q.beams * std::hypot(q.hx, q.hy);
   mean_range = points.beams > 0.0 ? mean_range / points.beams : 0.0;
   for (auto& p : particles_) {
-    // The prior: this increment's spread plus what odometry may have drifted since a scan
-    // last placed the particle (variances add).
-    const Pose2 predicted = p.pose * inc;
-    const OdometryPrior prior{std::sqrt(increment_prior.sigma_xy * increment_prior.sigma_xy +
-                                        p.drift_xy2),
-                              std::sqrt(increment_prior.sigma_theta *
-                                            increment_prior.sigma_theta +
-                                        p.drift_theta2)};
-    // gmapping's proposal: the match climbs from a sample of the motion model.
-    const Pose2 sample = motion_.sample(p.pose, last_odom_, odom, rng_);
+    // Odometry's increment as this particle's estimate of its scales corrects it.
+    const Pose2 predicted = predict(p.pose, inc, p.scale);
+    // The match's prior: this increment's spread plus what odometry may have drifted since a
+    // scan last placed the particle (variances add).
+    const OdometryPrior prior{
+        std::sqrt(increment_prior.sigma_xy * increment_prior.sigma_xy + p.drift_xy2),
+        std::sqrt(increment_prior.sigma_theta * increment_prior.sigma_theta + p.drift_theta2)};
+    // The pose's covariance relative to the map, carried forward and grown by the increment.
+    const Covariance predicted_covariance =
+        propagate(p.covariance, p.pose, inc, increment_prior.sigma_xy * increment_prior.sigma_xy,
+                  increment_prior.sigma_theta * increment_prior.sigma_theta, p.scale);
+    // gmapping's proposal: the match climbs from a sample of the motion model (its noise about
+    // the unscaled prediction, applied to the scaled one).
+    const Pose2 sample =
+        predicted * (p.pose * inc).inverse() * motion_.sample(p.pose, last_odom_, odom, rng_);
     matcher_.prepare(p.map, sample, points);
     Pose2 corrected;
     double score = matcher_.optimizeFrom(sample, predicted, points, &corrected, prior);
@@ -314,7 +331,24 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
         points.points.size() >= 3)
       score = rescue(p.map, predicted, points, prior, score, &corrected);
     if (score > params_.minimum_score) {
-      p.pose = corrected;
+      // The match, weighed per map cell, against the prediction and its carried covariance.
+      // The match's own pulls act along the step (the heading for a turn on the spot), with
+      // the step's length times the share of end points in space the particle's map has not
+      // seen, and with its turn.
+      MatchBiasRegressors regressors;
+      const double c = std::cos(p.pose.theta), s = std::sin(p.pose.theta);
+      const double tx = c * inc.x - s * inc.y, ty = s * inc.x + c * inc.y;
+      const double len = std::hypot(tx, ty);
+      regressors.ux = len > 1e-6 ? tx / len : std::cos(predicted.theta);
+      regressors.uy = len > 1e-6 ? ty / len : std::sin(predicted.theta);
+      int matched = 0, contradicting = 0;
+      matcher_.agreement(predicted, points, &matched, &contradicting);
+      const double n = std::max<double>(1.0, static_cast<double>(points.points.size()));
+      regressors.unknown_step = len * (1.0 - (matched + contradicting) / n);
+      regressors.turn = std::fabs(inc.theta);
+      p.pose = fuse(predicted, predicted_covariance, corrected,
+                    matcher_.calibratedInformation(corrected, points), &p.covariance, &p.scale,
+                    &regressors);
       p.drift_xy2 = p.drift_theta2 = 0.0;
       p.placed = true;
     } else {
@@ -322,6 +356,7 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
       // would tell the samples apart), and the spread is carried to the next match.
       ++report.failed_matches;
       p.pose = predicted;
+      p.covariance = predicted_covariance;
       p.drift_xy2 = prior.sigma_xy * prior.sigma_xy;
       p.drift_theta2 = prior.sigma_theta * prior.sigma_theta;
       // Its scan is drawn if the pose is known to a cell at the scan's typical range, or if

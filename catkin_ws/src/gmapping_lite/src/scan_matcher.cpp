@@ -316,7 +316,7 @@ double ScanMatcher::optimizeFrom(const Pose2& start, const Pose2& centre,
 }
 
 int ScanMatcher::normalEquations(const Pose2& pose, const ScanPoints& scan, double h[3][3],
-                                 double g[3]) const {
+                                 double g[3], bool per_beam) const {
   // Pairs further apart than this are outliers (unmapped or moved things).
   const double inlier2 = std::pow(2.0 * params_.sigma, 2);
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
@@ -341,7 +341,7 @@ int ScanMatcher::normalEquations(const Pose2& pose, const ScanPoints& scan, doub
     const EndPoint e = field_.query(x, y, c * p.ux - s * p.uy, s * p.ux + c * p.uy);
     if (e.state != EndState::kMatched || e.d2 > inlier2) continue;
     ++pairs;
-    w = p.beams;
+    w = per_beam ? p.beams : 1.0;
     const FieldSeed* seed = e.seed;
     const double ex = x - seed->mx, ey = y - seed->my;
     if (e.across) {
@@ -426,6 +426,16 @@ Information ScanMatcher::information(const Pose2& pose, const ScanPoints& scan,
     info.m[1][1] += 1.0 / (prior.sigma_xy * prior.sigma_xy);
   }
   if (prior.sigma_theta > 0) info.m[2][2] += 1.0 / (prior.sigma_theta * prior.sigma_theta);
+  return info;
+}
+
+Information ScanMatcher::calibratedInformation(const Pose2& pose, const ScanPoints& scan) const {
+  Information info;
+  double g[3];
+  if (normalEquations(pose, scan, info.m, g, false) < 3) return Information();
+  const double w = 1.0 / (params_.lsigma * params_.lsigma);
+  for (auto& row : info.m)
+    for (double& v : row) v *= w;
   return info;
 }
 

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <limits>
 
 #include "gmapping_lite/particle_filter.h"
 #include "synthetic.h"
@@ -120,4 +122,71 @@ TEST(ParticleFilter, ParticlesShareMapMemory) {
   // Even right after every particle wrote its latest scan, a good share of each map is
   // still held in common with other particles (the parts no recent scan touched).
   EXPECT_GT(double(shared) / double(total), 0.3);
+}
+
+TEST(ParticleFilter, CarriedCovarianceShrinksOnMatchesAndGrowsWithoutThem) {
+  const SyntheticWorld world = SyntheticWorld::office();
+  RunOptions options;
+  const SyntheticRun run = simulateRun(world, officeTour(), options);
+  ParticleFilter filter(turtlebotParams());
+  const std::size_t half = run.steps.size() / 2;
+  double carried = 0.0;  // the particles' position variances, summed
+  Pose2 last_odom;  // odometry at the last processed update
+  for (std::size_t i = 0; i < half; ++i)
+    if (filter.addScan(run.steps[i].odom, run.steps[i].stamp, run.laser, run.steps[i].ranges)
+            .processed)
+      last_odom = run.steps[i].odom;
+  // In the office's rooms the matches keep every particle's pose known to about a
+  // centimetre and a degree, where odometry's spreads alone would have grown all along.
+  for (const auto& p : filter.particles()) {
+    EXPECT_LT(std::sqrt(p.covariance.varXY()), 0.03);
+    EXPECT_LT(std::sqrt(p.covariance.varTheta()), 0.02);
+    carried += p.covariance.varXY();
+  }
+  EXPECT_GT(carried, 0.0);  // but never exact
+  // Then the laser sees nothing (every beam without a return) while the robot drives on: each
+  // update follows odometry exactly and adds its spread to every particle's covariance.
+  const Ranges blind(run.steps[half].ranges.size(), std::numeric_limits<float>::infinity());
+  auto smallest = [&filter]() {
+    double v = INFINITY;
+    for (const auto& p : filter.particles()) v = std::min(v, p.covariance.varXY());
+    return v;
+  };
+  double last = smallest();
+  int updates = 0;
+  for (std::size_t i = half; i < run.steps.size() && updates < 5; ++i) {
+    const UpdateReport r = filter.addScan(run.steps[i].odom, run.steps[i].stamp, run.laser, blind);
+    if (!r.processed) continue;
+    ++updates;
+    EXPECT_GT(smallest(), last);
+    last = smallest();
+    // Each particle's step is odometry's increment since the last update (scaled by the
+    // particle's estimate of odometry's scales, which nothing corrects here).
+    const Pose2 inc = run.steps[i].odom.relativeTo(last_odom);
+    for (const auto& p : filter.particles()) {
+      EXPECT_NEAR(p.trajectory->step.x, p.scale.distance * inc.x, 1e-9);
+      EXPECT_NEAR(p.trajectory->step.y, p.scale.distance * inc.y, 1e-9);
+      EXPECT_NEAR(p.trajectory->step.theta, p.scale.rotation * inc.theta, 1e-9);
+    }
+    last_odom = run.steps[i].odom;
+  }
+  EXPECT_EQ(updates, 5);
+}
+
+TEST(ParticleFilter, LearnsOdometrysScaleFactors) {
+  // A base whose odometry overstates distance by 3 % and turns by 5 % (a wheel radius and a
+  // track width off): the matches' corrections, through each particle's covariance of pose and
+  // scales, estimate both, and the trajectory stays on the truth.
+  const SyntheticWorld world = SyntheticWorld::office();
+  RunOptions options;
+  options.odom_scale_linear = 0.03;
+  options.odom_scale_angular = 0.05;
+  const SyntheticRun run = simulateRun(world, officeTour(), options);
+  ParticleFilter filter(turtlebotParams());
+  for (const auto& step : run.steps) filter.addScan(step.odom, step.stamp, run.laser, step.ranges);
+  const OdometryScale& scale = filter.best().scale;
+  std::printf("learnt scales: distance %.4f (truth %.4f), rotation %.4f (truth %.4f)\n",
+              scale.distance, 1.0 / 1.03, scale.rotation, 1.0 / 1.05);
+  EXPECT_NEAR(scale.distance, 1.0 / 1.03, 0.01);
+  EXPECT_NEAR(scale.rotation, 1.0 / 1.05, 0.01);
 }

@@ -11,6 +11,7 @@
 #include "gmapping_lite/loop_closure.h"
 #include "gmapping_lite/motion_model.h"
 #include "gmapping_lite/pose2.h"
+#include "gmapping_lite/pose_fusion.h"
 #include "gmapping_lite/scan_matcher.h"
 #include "gmapping_lite/slam_params.h"
 #include "gmapping_lite/trajectory.h"
@@ -26,6 +27,10 @@ struct Particle {
   // Odometry's variance accumulated since a scan last placed this particle (m^2, rad^2): a
   // match may correct that much on top of the current increment's spread.
   double drift_xy2 = 0.0, drift_theta2 = 0.0;
+  // The pose's covariance relative to the particle's own map, carried from update to update
+  // (world frame): the prediction's prior is this plus the increment's motion-model spread.
+  Covariance covariance;
+  OdometryScale scale;  // odometry's scale factors as this particle has estimated them
   Information information;  // of the pose the last match gave (world frame)
   bool placed = true;       // the last scan's pose was known well enough to draw it
 };

@@ -93,6 +93,15 @@ class ScanMatcher {
   Information information(const Pose2& pose, const ScanPoints& scan,
                           const OdometryPrior& prior) const;
 
+  // How well the scan pins `pose` down as a measurement of it (world frame, no prior): one
+  // observation per point, whatever the beams it stands for, at lsigma. The map holds each
+  // wall somewhere within a cell, and the beams ending in one cell (merge_distance) all look at
+  // that one record, so they are one observation, not many; lsigma is gmapping's spread of one
+  // observation about the map (the particle weights' likelihood). `information` counts every
+  // beam at sigma, five to ten times as much: right for the climb's shape, not for the pose's
+  // error.
+  Information calibratedInformation(const Pose2& pose, const ScanPoints& scan) const;
+
   // Points at `pose` that land on a mapped cell (within 2 sigma), and that contradict the map.
   void agreement(const Pose2& pose, const ScanPoints& scan, int* matched, int* contradicting) const;
 
@@ -128,10 +137,10 @@ class ScanMatcher {
   // does not constrain (a corridor) at odometry's.
   Pose2 refine(const Pose2& start, const ScanPoints& scan, const Pose2& centre,
                const OdometryPrior& prior) const;
-  // Gauss-Newton normal equations h, g of the matched points at `pose` (unit weights);
-  // returns the number of pairs.
+  // Gauss-Newton normal equations h, g of the matched points at `pose` (each point weighted by
+  // its beams, or by one with per_beam false); returns the number of pairs.
   int normalEquations(const Pose2& pose, const ScanPoints& scan, double h[3][3],
-                      double g[3]) const;
+                      double g[3], bool per_beam = true) const;
   // `pose` with its offset from `centre` removed along the directions the scan constrains
   // less than the prior does.
   Pose2 keepUnconstrained(const Pose2& pose, const Pose2& centre, const ScanPoints& scan,
