@@ -204,6 +204,25 @@ void ParticleFilter::backEnd(const ScanPoints& points, const OdometryPrior& prio
   closeLoop(chain, report);
 }
 
+double ParticleFilter::dispersion() const {
+  // How much the matches' corrections scatter beyond what prediction and match covariance
+  // allow (mean normalised innovation square over its expectation), never below 1.
+  return nis_expected_ > 0.0 ? std::max(1.0, nis_sum_ / nis_expected_) : 1.0;
+}
+
+OdometryScale ParticleFilter::significantScale(const Particle& p) const {
+  // A learnt scale enters the prediction once it differs from 1 by more than 1.96 sd
+  // (two-sided 5 %) of its estimate, the sd inflated by the matches' dispersion: where the data
+  // say odometry's scale is 1, odometry is taken as it is.
+  const double phi = dispersion();
+  OdometryScale s = p.scale;
+  if (std::fabs(p.scale.distance - 1.0) <= 1.96 * std::sqrt(phi * p.covariance.m[3][3]))
+    s.distance = 1.0;
+  if (std::fabs(p.scale.rotation - 1.0) <= 1.96 * std::sqrt(phi * p.covariance.m[4][4]))
+    s.rotation = 1.0;
+  return s;
+}
+
 void ParticleFilter::closeLoop(const std::vector<const TrajectoryNode*>& chain,
                                UpdateReport* report) {
   PoseGraph graph;
@@ -310,7 +329,8 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
   mean_range = points.beams > 0.0 ? mean_range / points.beams : 0.0;
   for (auto& p : particles_) {
     // Odometry's increment as this particle's estimate of its scales corrects it.
-    const Pose2 predicted = predict(p.pose, inc, p.scale);
+    const OdometryScale applied = significantScale(p);
+    const Pose2 predicted = predict(p.pose, inc, applied);
     // The match's prior: this increment's spread plus what odometry may have drifted since a
     // scan last placed the particle (variances add).
     const OdometryPrior prior{
@@ -319,7 +339,7 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
     // The pose's covariance relative to the map, carried forward and grown by the increment.
     const Covariance predicted_covariance =
         propagate(p.covariance, p.pose, inc, increment_prior.sigma_xy * increment_prior.sigma_xy,
-                  increment_prior.sigma_theta * increment_prior.sigma_theta, p.scale);
+                  increment_prior.sigma_theta * increment_prior.sigma_theta, applied);
     // gmapping's proposal: the match climbs from a sample of the motion model (its noise about
     // the unscaled prediction, applied to the scaled one).
     const Pose2 sample =
@@ -346,9 +366,12 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
       const double n = std::max<double>(1.0, static_cast<double>(points.points.size()));
       regressors.unknown_step = len * (1.0 - (matched + contradicting) / n);
       regressors.turn = std::fabs(inc.theta);
+      std::pair<double, double> consistency;
       p.pose = fuse(predicted, predicted_covariance, corrected,
                     matcher_.calibratedInformation(corrected, points), &p.covariance, &p.scale,
-                    &regressors);
+                    &consistency, &regressors);
+      nis_sum_ += consistency.first;
+      nis_expected_ += consistency.second;
       p.drift_xy2 = p.drift_theta2 = 0.0;
       p.placed = true;
     } else {

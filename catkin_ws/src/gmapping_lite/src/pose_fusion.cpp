@@ -50,11 +50,12 @@ Covariance propagate(const Covariance& cov, const Pose2& pose, const Pose2& incr
 
 Pose2 fuse(const Pose2& predicted, const Covariance& prior, const Pose2& measured,
            const Information& info, Covariance* posterior, OdometryScale* scale,
-           const MatchBiasRegressors* bias) {
+           std::pair<double, double>* consistency, const MatchBiasRegressors* bias) {
   // The measurement sees the pose only (H = [1 0]). Gain K = P H' (H P H' + I^-1)^-1 =
   // P H' (1 + I H P H')^-1 I: only 1 + I H P H' is inverted, and its eigenvalues are at least 1
   // (I H P H' is similar to a positive semi-definite matrix).
   const Matrix5 p = toEigen(prior);
+  if (consistency) *consistency = {0.0, 0.0};
   Eigen::Matrix3d i;
   for (int r = 0; r < 3; ++r)
     for (int k = 0; k < 3; ++k) i(r, k) = info.m[r][k];
@@ -83,6 +84,19 @@ Pose2 fuse(const Pose2& predicted, const Covariance& prior, const Pose2& measure
                                    measured.y - predicted.y - pull_y,
                                    normalizeAngle(measured.theta - predicted.theta));
   const Eigen::Matrix<double, kStates, 1> step = gain * innovation;
+  if (consistency) {
+    // S^-1 = (1 + I P)^-1 I. With the innovation ~ N(0, P + I^-1) on I's range, E[nu' S^-1 nu]
+    // = tr((1 + I P)^-1 (I P + Pi)), Pi the projector on I's range (3 where I is regular).
+    const Eigen::Matrix3d s_inv = lu.solve(i);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(i);
+    const double top = eig.eigenvalues().maxCoeff();
+    Eigen::Matrix3d range = Eigen::Matrix3d::Zero();
+    for (int k = 0; k < 3; ++k)
+      if (eig.eigenvalues()(k) > 1e-9 * top)
+        range += eig.eigenvectors().col(k) * eig.eigenvectors().col(k).transpose();
+    consistency->first = innovation.dot(s_inv * innovation);
+    consistency->second = lu.solve(i * hph + range).trace();
+  }
   *posterior = symmetric((Matrix5::Identity() - gain * h) * p);
   if (scale) {
     scale->distance += step(3);

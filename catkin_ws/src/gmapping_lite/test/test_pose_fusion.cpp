@@ -173,7 +173,8 @@ OdometryScale learnOnBiasedMatches(bool model_pulls, double pull) {
     r.unknown_step = 0.5 * (k % 2 ? 0.5 : 0.0);
     const Pose2 registered = estimate * inc;
     const Pose2 measured(registered.x + pull * r.unknown_step, registered.y, registered.theta);
-    estimate = fuse(predicted, prior, measured, info, &cov, &scale, model_pulls ? &r : nullptr);
+    estimate = fuse(predicted, prior, measured, info, &cov, &scale, nullptr,
+                    model_pulls ? &r : nullptr);
   }
   return scale;
 }

@@ -87,6 +87,11 @@ class ParticleFilter {
   double rescue(const GridMap& map, const Pose2& predicted, const ScanPoints& points,
                 const OdometryPrior& prior, double score, Pose2* corrected);
 
+  // The matches' dispersion so far, and a particle's scales as they enter its prediction (1
+  // where its estimate does not differ from 1 significantly).
+  double dispersion() const;
+  OdometryScale significantScale(const Particle& p) const;
+  double nis_sum_ = 0.0, nis_expected_ = 0.0;
   SlamParams params_;
   MotionModel motion_;
   ScanMatcher matcher_;

@@ -12,6 +12,8 @@
 // the matches' corrections estimate the scales through their covariance with the pose.
 #pragma once
 
+#include <utility>
+
 #include "gmapping_lite/pose2.h"
 #include "gmapping_lite/pose_graph.h"
 
@@ -73,10 +75,14 @@ Covariance propagate(const Covariance& cov, const Pose2& pose, const Pose2& incr
 // covariance; `scale`, when given, takes its share of the correction. Computed without
 // inverting `prior` or `info`, so either may be singular (a prediction known exactly, a scan
 // that pins nothing).
-// `bias`, when given, says where the match's own pulls (the scale's last two states) act in
-// this update: the match is then a measurement of the pose plus those pulls.
+// `consistency`, when given, receives the innovation's normalised square (innovation' S^-1
+// innovation, S = prior + info^-1 over what the scan observes) in `first` and its expectation
+// if prior and info were right (the observed dimensions, at most 3) in `second`. `bias`, when
+// given, says where the match's own pulls (the last two states) act in this update: the match
+// is then a measurement of the pose plus those pulls.
 Pose2 fuse(const Pose2& predicted, const Covariance& prior, const Pose2& measured,
            const Information& info, Covariance* posterior, OdometryScale* scale = nullptr,
+           std::pair<double, double>* consistency = nullptr,
            const MatchBiasRegressors* bias = nullptr);
 
 }  // namespace gmapping_lite
