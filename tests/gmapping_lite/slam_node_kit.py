@@ -83,3 +83,24 @@ def assert_room_mapped(grid):
     assert near(grid, 1.5, 1.3, 100), "box missing"
     for x, y in ((0.5, 0.0), (-2.0, -1.5), (-2.5, 2.0), (3.0, -2.0)):
         assert cell(grid, x, y) == 0, f"({x}, {y}) should be free"
+
+
+def wait_for_room_mapped(ros, node=None, timeout=60):
+    """assert_room_mapped on the node's newest map, until it passes or `timeout` s: when the
+    drive or the playback ends the node may still be taking in the last scans (it works
+    through them at the CPU's pace). Fails with the last check's reason and the node's log."""
+    reason = []
+
+    def mapped():
+        try:
+            assert_room_mapped(ros.echo("map")[0]["msg"])
+        except AssertionError as error:
+            reason[:] = [str(error)]
+            return False
+        return True
+
+    try:
+        ros.wait_for(mapped, timeout, "the room in the map", interval=1.0)
+    except Exception as error:
+        log = ros.output(node)[-3000:] if node is not None else ""
+        raise AssertionError(f"{reason[-1] if reason else error}\n{log}") from None
