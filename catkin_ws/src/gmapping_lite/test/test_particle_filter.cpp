@@ -120,8 +120,11 @@ TEST(ParticleFilter, ParticlesShareMapMemory) {
     shared += p.map.sharedPatchCount();
   }
   // Even right after every particle wrote its latest scan, a good share of each map is
-  // still held in common with other particles (the parts no recent scan touched).
-  EXPECT_GT(double(shared) / double(total), 0.3);
+  // still held in common with other particles (the parts no recent scan touched); without
+  // copy-on-write sharing it would be none. How much depends on how many distinct lineages
+  // survive resampling: 0.42 with the fixed-odometry filter, 0.27 once each particle's Kalman
+  // state keeps particles apart (flatter weights), so the floor guards the sharing itself.
+  EXPECT_GT(double(shared) / double(total), 0.2);
 }
 
 TEST(ParticleFilter, CarriedCovarianceShrinksOnMatchesAndGrowsWithoutThem) {
