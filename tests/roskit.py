@@ -166,11 +166,11 @@ class RosGraph:
         # The free port can be taken before rosmaster binds it (another worker's master, or an
         # outgoing connection's local port: both come from the same ephemeral range), and then
         # rosmaster stays up without serving: it is started again on another port.
+        # ROS's own log files beside the test's other outputs (pytest prunes old runs).
+        log_dir = self.workdir / "ros_log"
+        log_dir.mkdir(parents=True, exist_ok=True)
         for attempt in range(3):
             self.port = free_port()
-            # ROS's own log files beside the test's other outputs (pytest prunes old runs).
-            log_dir = self.workdir / "ros_log"
-            log_dir.mkdir(parents=True, exist_ok=True)
             self.env = ros_environment(self.port, base_env, log_dir=log_dir)
             cmd = ["rosmaster", "--core", "-p", str(self.port), "-w", "3"]
             self.core = self.start(cmd, name="rosmaster")

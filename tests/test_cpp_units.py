@@ -51,6 +51,9 @@ def test_gtest_binary(package, name, tmp_path):
         text=True,
         timeout=600,
         cwd=tmp_path,
+        # testing::TempDir() is TEST_TMPDIR: the files a gtest writes there stay in the test's
+        # own folder, which pytest prunes, instead of /tmp.
+        env=dict(os.environ, TEST_TMPDIR=str(tmp_path)),
     )
     assert done.returncode == 0, done.stdout[-20000:] + done.stderr[-5000:]
     assert "[  PASSED  ]" in done.stdout, done.stdout[-5000:]

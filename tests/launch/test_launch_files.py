@@ -159,7 +159,9 @@ def test_launch_file_brings_up_its_nodes(ros, tmp_path, request, launch_file):
     if reads_stdin:
         keyboard, terminal = pty.openpty()
         request.addfinalizer(lambda: (os.close(keyboard), os.close(terminal)))
-    launch = ros.start(cmd, name=Path(launch_file).stem, stdin=terminal)
+    # xvfb-run makes its auth folder in TMPDIR: the test's own, which pytest prunes.
+    env = dict(ros.env, TMPDIR=str(tmp_path)) if display else None
+    launch = ros.start(cmd, name=Path(launch_file).stem, stdin=terminal, env=env)
     uri = ros.env["ROS_MASTER_URI"]
 
     def all_up():

@@ -45,7 +45,9 @@ def test_bad_world_files_are_named(tmp_path, text, message):
 
 def test_the_script_prints_one_component():
     script = PACKAGE / "scripts" / "world_start.py"
-    env = {"PYTHONPATH": str(PACKAGE / "src"), "PATH": "/usr/bin:/bin"}
+    # The two packages' own modules and nothing else of the workspace's environment.
+    sources = [PACKAGE / "src", PACKAGE.parent / "rosbook_env" / "src"]
+    env = {"PYTHONPATH": ":".join(map(str, sources)), "PATH": "/usr/bin:/bin"}
     done = subprocess.run(
         [str(script), "office", "x", str(WORLDS)], capture_output=True, text=True, env=env
     )

@@ -90,6 +90,7 @@ std::string shown(const std::string& name, double value, const std::string& rule
   out << name << " is " << value << ": it must be " << rule;
   return out.str();
 }
+}  // namespace
 
 std::string entryProblem(const ParamEntry& e, double v) {
   const ParamBounds& b = e.bounds;
@@ -99,7 +100,6 @@ std::string entryProblem(const ParamEntry& e, double v) {
   if (b.whole && v != std::floor(v)) return shown(e.name, v, "a whole number: " + b.rule);
   return "";
 }
-}  // namespace
 
 std::string valueProblem(const std::string& name, double value) {
   const auto& table = paramTable();

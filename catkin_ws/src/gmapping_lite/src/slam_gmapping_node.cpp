@@ -52,7 +52,7 @@ SlamGmappingNode::SlamGmappingNode() : private_("~"), tf_listener_(tf_buffer_) {
       continue;
     }
     // Checked before it is stored: an integer field would cut 2.5 particles to 2.
-    if (problem.empty()) problem = valueProblem(e.name, value);
+    if (problem.empty()) problem = entryProblem(e, value);
     if (problem.empty()) e.set(&options.params, value);
   }
   options.max_range_set = private_.hasParam("maxRange");

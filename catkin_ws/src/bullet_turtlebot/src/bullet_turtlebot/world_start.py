@@ -7,10 +7,10 @@ world in `worlds_dir`. A world file without `start` starts the robot at the orig
 
 import math
 import re
-import stat
 from pathlib import Path
 
 import yaml
+from rosbook_env.files import special_file_note
 
 
 def world_path(world, worlds_dir):
@@ -37,8 +37,9 @@ def start_pose(world, worlds_dir):
     of the origin, a yaw within 1000 rad."""
     path = world_path(world, worlds_dir)
     try:
-        if not stat.S_ISREG(path.stat().st_mode):  # /dev/zero: read until memory runs out
-            raise ValueError(f"world file {path}: not a regular file; give a world YAML file")
+        special = special_file_note(path)
+        if special:
+            raise ValueError(f"world file {path}: {special}; give a world YAML file")
         spec = yaml.load(path.read_text(), Loader=_Loader)
     except OSError as err:
         raise ValueError(f"cannot read world file {path}: {err.strerror}") from err

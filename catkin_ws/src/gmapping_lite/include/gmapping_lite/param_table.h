@@ -37,6 +37,9 @@ bool setParam(SlamParams* params, const std::string& name, double value);
 // must be RULE", or empty when it is usable or the name is unknown.
 std::string valueProblem(const std::string& name, double value);
 
+// The same check for an entry already in hand (no search of the table by name).
+std::string entryProblem(const ParamEntry& e, double value);
+
 // The first parameter the filter cannot work with, as "NAME is VALUE: it must be RULE"; empty
 // when all are usable. maxRange / maxUrange are checked only when set (see rangeDefaults).
 std::string paramProblem(const SlamParams& params, bool max_range_set, bool max_urange_set);

@@ -4,9 +4,10 @@ import io
 from pathlib import Path
 
 import numpy as np
+from rosbook_env.files import special_file_note
 
 from map_server import pgm
-from map_server.errors import MapFileNotFoundError, MapImageError, cwd_note, special_file_note
+from map_server.errors import MapFileNotFoundError, MapImageError, cwd_note
 
 # map_saver's pixel values.
 PGM_FREE, PGM_OCCUPIED, PGM_UNKNOWN = 254, 0, 205

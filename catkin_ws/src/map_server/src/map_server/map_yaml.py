@@ -7,8 +7,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import yaml
+from rosbook_env.files import special_file_note
 
-from map_server.errors import MapFileNotFoundError, MapYamlError, cwd_note, special_file_note
+from map_server.errors import MapFileNotFoundError, MapYamlError, cwd_note
 
 MODES = ("trinary", "scale", "raw")
 REQUIRED_KEYS = ("image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh")
