@@ -486,10 +486,36 @@ def _kill_group(proc):
     _kill_groups([proc])
 
 
+def _running(pid):
+    """True while `pid` runs (a zombie has ended: its parent has yet to collect it)."""
+    try:
+        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except (OSError, IndexError):
+        return False
+    return state != "Z"
+
+
+def _stop_x_servers(below, timeout=5.0):
+    """Let the X servers (xvfb-run's Xvfb) among `below` ({pid: command line}) exit on
+    SIGTERM: Xvfb removes its /tmp/.X<n>-lock as it exits, and SIGKILL would leave it."""
+    servers = [
+        pid for pid, cmdline in below.items() if Path(cmdline.split(" ", 1)[0]).name == "Xvfb"
+    ]
+    for pid in servers:
+        try:
+            os.kill(pid, signal.SIGTERM)
+        except ProcessLookupError:
+            pass
+    deadline = time.monotonic() + timeout
+    while any(_running(pid) for pid in servers) and time.monotonic() < deadline:
+        time.sleep(0.05)  # a poll with a deadline: whatever is left is killed next
+
+
 def _kill_groups(procs, timeout=5):
     # roslaunch starts each node in a session of its own: killed with roslaunch's group, they
     # would live on (waiting for their master) unless killed by pid as well.
     below = descendants_of([proc.pid for proc in procs])
+    _stop_x_servers(below)
     for proc in procs:
         try:
             os.killpg(proc.pid, signal.SIGKILL)
