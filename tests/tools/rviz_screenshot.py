@@ -61,6 +61,18 @@ class ScreenGrabError(RvizError):
     loaded machine leaves Xvfb slow to answer): the next grab may well succeed."""
 
 
+def _group_running(pgid):
+    """True while a process of process group `pgid` runs (zombies have ended)."""
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            fields = stat.read_text().rsplit(")", 1)[1].split()
+        except (OSError, IndexError):
+            continue  # a process that ended while we looked
+        if int(fields[2]) == pgid and fields[0] != "Z":
+            return True
+    return False
+
+
 class RvizSession:
     """One rviz inside its own Xvfb; screenshots on demand; everything killed on close.
 
@@ -183,6 +195,11 @@ class RvizSession:
                 break
             except subprocess.TimeoutExpired:
                 continue
+        # xvfb-run exits as soon as it has signalled Xvfb; Xvfb removes its /tmp/.X<n>-lock
+        # on the way out, and a SIGKILL before then leaves the lock behind.
+        deadline = time.monotonic() + 5
+        while _group_running(self.proc.pid) and time.monotonic() < deadline:
+            time.sleep(0.05)
         try:
             os.killpg(self.proc.pid, signal.SIGKILL)
         except ProcessLookupError:
