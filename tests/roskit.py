@@ -464,12 +464,18 @@ def descendants(pid):
     return descendants_of([pid])
 
 
+def _stat_fields(stat_path):
+    """The fields of /proc/PID/stat after the command name (which may hold spaces and
+    parentheses): [0] the state, [1] the parent's pid, [2] the process group."""
+    return Path(stat_path).read_text().rsplit(")", 1)[1].split()
+
+
 def descendants_of(pids):
     """{pid: command line} of every process below any of `pids` (one look at /proc)."""
     children = {}
     for stat in Path("/proc").glob("[0-9]*/stat"):
         try:
-            ppid = int(stat.read_text().rsplit(")", 1)[1].split()[1])
+            ppid = int(_stat_fields(stat)[1])
             cmdline = (stat.parent / "cmdline").read_bytes().replace(b"\0", b" ").decode()
         except (OSError, IndexError, ValueError):
             continue  # a process that ended while we looked
@@ -489,7 +495,7 @@ def _kill_group(proc):
 def _running(pid):
     """True while `pid` runs (a zombie has ended: its parent has yet to collect it)."""
     try:
-        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+        state = _stat_fields(f"/proc/{pid}/stat")[0]
     except (OSError, IndexError):
         return False
     return state != "Z"
