@@ -20,6 +20,7 @@ from geometry_msgs.msg import PoseWithCovarianceStamped, Twist
 from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
 from nav_msgs.msg import Odometry
 from rosbook_env.geometry import yaw_of
+from rosbook_eval.poses import wrap
 from std_srvs.srv import Empty
 
 STATES = {v: k for k, v in vars(GoalStatus).items() if k.isupper() and isinstance(v, int)}
@@ -30,6 +31,7 @@ class Recorder:
         self.lock = threading.Lock()
         self.truth = []  # (t, x, y, yaw), in arrival order (sim time increases)
         self.errors = []  # (t, amcl position error)
+        self.yaw_errors = []  # (t, amcl heading error, amcl's own heading sd)
         self.obstacle = None  # (x, y): record how near the robot's centre comes to it
         self.nearest = float("inf")
         rospy.Subscriber("base_pose_ground_truth", Odometry, self.on_truth, queue_size=50)
@@ -60,12 +62,20 @@ class Recorder:
         if truth is None or abs(truth[0] - t) > 0.1:
             return
         p = msg.pose.pose.position
+        yaw = yaw_of(msg.pose.pose.orientation)
         with self.lock:
             self.errors.append((t, math.hypot(p.x - truth[1], p.y - truth[2])))
+            self.yaw_errors.append(
+                (t, abs(wrap(yaw - truth[3])), math.sqrt(max(msg.pose.covariance[35], 0.0)))
+            )
 
     def errors_since(self, t0):
         with self.lock:
             return [e for t, e in self.errors if t >= t0]
+
+    def yaw_errors_since(self, t0):
+        with self.lock:
+            return [(e, sd) for t, e, sd in self.yaw_errors if t >= t0]
 
 
 def goal_of(x, y, yaw):
@@ -159,11 +169,16 @@ def main():
         out.write(json.dumps({"preempted_goal_state_before": STATES.get(first_state)}) + "\n")
     for goal in goals:
         t0 = rospy.get_time()
-        client.send_goal(goal_of(*goal))
+        decided = []  # move_base's own pose each cycle (feedback base_position)
+        client.send_goal(
+            goal_of(*goal), feedback_cb=lambda fb, decided=decided: decided.append(fb.base_position)
+        )
         finished = client.wait_for_result(rospy.Duration(args.goal_timeout))
         t1 = rospy.get_time()
         truth = recorder.truth_at(t1)
         errors = recorder.errors_since(t0)
+        yaw_errors = recorder.yaw_errors_since(t0)
+        own = decided[-1].pose if decided else None
         record = {
             "goal": goal,
             "finished": finished,
@@ -178,6 +193,16 @@ def main():
             "amcl_max_error": max(errors) if errors else None,
             "amcl_last_error": errors[-1] if errors else None,
             "amcl_updates": len(errors),
+            # move_base's own pose when it decided, for diagnosis: its last feedback as the
+            # client got it (actionlib drops a feedback that arrives after the result, so at
+            # times it is the cycle before).
+            "own_position_error": math.hypot(own.position.x - goal[0], own.position.y - goal[1])
+            if own
+            else None,
+            "own_yaw_error": abs(wrap(yaw_of(own.orientation) - goal[2])) if own else None,
+            "amcl_max_yaw_error": max(e for e, _ in yaw_errors) if yaw_errors else None,
+            "amcl_last_yaw_error": yaw_errors[-1][0] if yaw_errors else None,
+            "amcl_last_yaw_sd": yaw_errors[-1][1] if yaw_errors else None,
             "nearest_to_obstacle": recorder.nearest if recorder.obstacle else None,
         }
         if not finished:

@@ -27,8 +27,12 @@ XY_GOAL_TOLERANCE = 0.05  # move_base_lite's config/move_base_params.yaml
 # odometry noise (a few per cent) and with a last command's worth of slow approach, a few
 # centimetres.
 DRIFT_SINCE_LAST_UPDATE = 0.05
-# rad: move_base_lite's yaw_goal_tolerance (0.10, on amcl's estimate) plus amcl's heading error
-# once converged (0.10).
+# rad: move_base_lite's yaw_goal_tolerance (0.10, on its own pose: amcl's estimate) plus amcl's
+# heading error once converged (0.10). Measured at the second and third goals of 20 loaded runs
+# (session 18): move_base's own pose 0.06-0.10 rad off (it stops on entering the tolerance),
+# amcl's heading error at its last update 0.00-0.11, the truth 0.07-0.17 off. Before move_base
+# took amcl's newest correction (it used the one amcl made transform_tolerance = 1 s before,
+# test_move_base_pose.py), 8 runs gave 0.07-0.18, and one CI run 0.209.
 YAW_GOAL_TOLERANCE = 0.10
 GOAL_YAW_LIMIT = YAW_GOAL_TOLERANCE + 0.10
 # The rviz-style initial pose below is this far off in heading; until amcl has converged (the
@@ -83,7 +87,10 @@ def test_amcl_converges_from_an_offset_pose_and_goals_are_reached(ros, tmp_path)
         print(
             f"goal {r['goal']}: {r['state']} in {r['sim_seconds']:.1f} sim s, position error "
             f"{r['position_error']:.3f} m, yaw error {r['yaw_error']:.3f} rad, amcl error max "
-            f"{r['amcl_max_error']:.3f} m, last {r['amcl_last_error']:.3f} m"
+            f"{r['amcl_max_error']:.3f} m, last {r['amcl_last_error']:.3f} m; move_base's own "
+            f"pose {r['own_position_error']:.3f} m, {r['own_yaw_error']:.3f} rad off; amcl heading "
+            f"error max {r['amcl_max_yaw_error']:.3f}, last {r['amcl_last_yaw_error']:.3f} rad "
+            f"(its sd {r['amcl_last_yaw_sd']:.3f})"
         )
     assert len(goals) == len(GOALS)
     for n, r in enumerate(goals):

@@ -38,7 +38,14 @@ from nav_msgs.srv import GetPlan, GetPlanResponse  # noqa: E402
 from rosbook_env.geometry import yaw_of, yaw_to_quaternion  # noqa: E402
 from rosbook_env.master_watch import survive_master_restart  # noqa: E402
 from rosbook_env.params import ParamError, count, positive  # noqa: E402
+from rosbook_eval.poses import compose  # noqa: E402
 from sensor_msgs.msg import LaserScan  # noqa: E402
+
+
+def pose2(transform_stamped):
+    """(x, y, yaw) of a geometry_msgs/TransformStamped."""
+    t = transform_stamped.transform
+    return t.translation.x, t.translation.y, yaw_of(t.rotation)
 
 
 def set_yaw(q, yaw):
@@ -50,6 +57,8 @@ class MoveBase:
         get = rospy.get_param
         self.global_frame = get("~global_frame", "map").lstrip("/")
         self.base_frame = get("~robot_base_frame", "base_footprint").lstrip("/")
+        # The frame localization corrects (amcl's or SLAM's map -> odom): see lookup_global.
+        self.odom_frame = get("~odom_frame", "odom").lstrip("/")
         self.rate = positive("~controller_frequency", get("~controller_frequency", 10.0))
         self.costmap_params = CostmapParams(
             robot_radius=positive("~robot_radius", get("~robot_radius", 0.18)),
@@ -124,17 +133,10 @@ class MoveBase:
     def on_scan(self, msg):
         frame = msg.header.frame_id.lstrip("/")
         try:
-            t = self.tf_buffer.lookup_transform(
-                self.global_frame, frame, msg.header.stamp, rospy.Duration(0.2)
-            )
+            sensor = self.lookup_global(frame, msg.header.stamp)
         except tf2_ros.TransformException as e:
             rospy.logwarn_throttle(10, f"move_base: no tf {self.global_frame} -> {frame}: {e}")
             return
-        sensor = (
-            t.transform.translation.x,
-            t.transform.translation.y,
-            yaw_of(t.transform.rotation),
-        )
         offset = self.sensor_offset(frame)
         clear = scan_clearance(msg, self.costmap_params.robot_radius, offset or 0.0)
         hits, free_ends, origin = scan_endpoints(
@@ -155,17 +157,35 @@ class MoveBase:
             self.sensor_offsets[frame] = t.transform.translation.x
         return self.sensor_offsets[frame]
 
+    def lookup_global(self, frame, stamp):
+        """(x, y, yaw) of `frame` in the global frame at `stamp`: odometry's odom -> frame
+        then, on top of it, the newest global -> odom correction. One lookup global -> frame
+        would interpolate global -> odom between samples its publisher dated ahead (amcl's
+        transform_tolerance, 1 s in the Turtlebot's amcl.launch), so a new correction would
+        count only that long after it was made: the robot stopped a converging amcl's
+        older error (0.05 rad) short of a goal heading (tests/navigation). Without an odom
+        frame between them (global_frame is odom), the one lookup."""
+        timeout = rospy.Duration(0.2)
+        if self.odom_frame in (self.global_frame, frame):
+            return pose2(self.tf_buffer.lookup_transform(self.global_frame, frame, stamp, timeout))
+        odometry = pose2(self.tf_buffer.lookup_transform(self.odom_frame, frame, stamp, timeout))
+        try:
+            correction = self.tf_buffer.lookup_transform(
+                self.global_frame, self.odom_frame, rospy.Time(0)
+            )
+        except tf2_ros.TransformException:
+            # No odom frame in this tree: the global frame reaches `frame` another way.
+            return pose2(self.tf_buffer.lookup_transform(self.global_frame, frame, stamp, timeout))
+        return compose(pose2(correction), odometry)
+
     def robot_pose(self):
         try:
-            t = self.tf_buffer.lookup_transform(
-                self.global_frame, self.base_frame, rospy.Time(0), rospy.Duration(0.2)
-            )
+            return self.lookup_global(self.base_frame, rospy.Time(0))
         except tf2_ros.TransformException as e:
             rospy.logwarn_throttle(
                 10, f"move_base: waiting for tf {self.global_frame} -> {self.base_frame}: {e}"
             )
             return None
-        return t.transform.translation.x, t.transform.translation.y, yaw_of(t.transform.rotation)
 
     def to_global(self, pose_stamped):
         """(x, y, yaw) of a PoseStamped in the global frame, or None with a reason."""
