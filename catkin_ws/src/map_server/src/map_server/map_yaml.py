@@ -7,9 +7,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import yaml
-from rosbook_env.files import special_file_note
+from rosbook_env.files import looked_in_note, resolve_user_path, special_file_note
 
-from map_server.errors import MapFileNotFoundError, MapYamlError, cwd_note
+from map_server.errors import MapFileNotFoundError, MapYamlError
 
 MODES = ("trinary", "scale", "raw")
 REQUIRED_KEYS = ("image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh")
@@ -144,7 +144,10 @@ def parse_map_yaml(text, yaml_path):
 
 
 def read_map_yaml(yaml_path):
-    yaml_path = Path(yaml_path)
+    """Read and check a map YAML. A relative path missing from the cwd is looked for in the
+    launching shell's folder (roslaunch runs nodes in ~/.ros): rosbook_env.files."""
+    given = yaml_path
+    yaml_path = Path(resolve_user_path(yaml_path))
     special = special_file_note(yaml_path)
     if special:
         raise MapYamlError(f"{yaml_path}: {special}; give the map YAML file")
@@ -152,7 +155,7 @@ def read_map_yaml(yaml_path):
         text = yaml_path.read_text(encoding="utf-8")
     except FileNotFoundError:
         raise MapFileNotFoundError(
-            f"{yaml_path}: map YAML file not found{cwd_note(yaml_path)}"
+            f"{yaml_path}: map YAML file not found{looked_in_note(given)}"
         ) from None
     except IsADirectoryError:
         raise MapYamlError(f"{yaml_path}: is a directory, not a map YAML file") from None
