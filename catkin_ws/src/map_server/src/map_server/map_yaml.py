@@ -2,12 +2,12 @@
 
 import json
 import math
-import re
 from dataclasses import dataclass
 from pathlib import Path
 
 import yaml
 from rosbook_env.files import looked_in_note, resolve_user_path, special_file_note
+from rosbook_env.yaml_files import YamlCppLoader, load_unique
 
 from map_server.errors import MapFileNotFoundError, MapYamlError
 
@@ -21,18 +21,6 @@ SAVED_OCCUPIED_THRESH, SAVED_FREE_THRESH = 0.65, 0.196
 # nav_msgs/MapMetaData carries the resolution as a float32: its smallest normal and its
 # largest value.
 FLOAT32_TINY, FLOAT32_MAX = 1.1754943508222875e-38, 3.4028234663852886e38
-
-
-class _MapLoader(yaml.SafeLoader):
-    """SafeLoader that also reads `5e-2` and `1e3` as numbers, as YAML 1.2 and the original
-    map_server's yaml-cpp do (PyYAML's YAML 1.1 floats need a dot: it read `5e-2` as text)."""
-
-
-_MapLoader.add_implicit_resolver(
-    "tag:yaml.org,2002:float",
-    re.compile(r"^[-+]?(?:[0-9][0-9_]*)(?:\.[0-9_]*)?[eE][-+]?[0-9]+$"),
-    list("-+0123456789"),
-)
 
 
 @dataclass(frozen=True)
@@ -102,7 +90,7 @@ def parse_map_yaml(text, yaml_path):
     yaml_path = Path(yaml_path)
     where = str(yaml_path)
     try:
-        doc = yaml.load(text, Loader=_MapLoader)
+        doc = load_unique(text, YamlCppLoader)  # yaml-cpp's numbers, no duplicate keys
     except yaml.YAMLError as err:
         raise MapYamlError(f"{where}: not valid YAML: {err}") from None
     except RecursionError:  # PyYAML's parser recurses once per nesting level
