@@ -42,6 +42,7 @@ FAST_INTEGRATION = (
     "tests/map_server/test_map_server.py::test_books_command_from_maps_folder",
     "tests/launch/test_launch_files.py::test_the_table_names_every_launch_file",
     "tests/rosbook_eval/test_same_figures.py",
+    "tests/bench/test_results_section.py",  # unit tests on text (bench/ has no test folder)
     "tests/launch/test_launch_files.py::test_launch_file_brings_up_its_nodes[catkin_ws/src/rosbook_demo/launch/mapping_live.launch]",
 )
 

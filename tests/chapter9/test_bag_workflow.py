@@ -6,6 +6,7 @@ sim time, save it with map_saver, serve it with map_server, and check it against
 import math
 import re
 import signal
+import subprocess
 import xmlrpc.client
 from pathlib import Path
 
@@ -15,6 +16,7 @@ from map_server.map_io import load_map
 from rosbook_eval.grids import near_wall_share, occupied_points
 from rosbook_eval.scoring import place_grid
 from rosbook_eval.truth import truth_grid
+from roskit import without_rosrun
 
 SIM_SECONDS = 150.0
 SPEED = 5.0
@@ -39,6 +41,14 @@ def scans_dropped(ros, node="/slam_gmapping"):
     # roscpp answers [publications, subscriptions] (rospy: [code, message, stats])
     _, subscriptions = xmlrpc.client.ServerProxy(uri).getBusStats("/chapter9_tests")
     return sum(c[3] for topic, conns in subscriptions if topic == "/scan" for c in conns)
+
+
+def messages_received(ros, node, topic):
+    """Messages of `topic` that `node` (roscpp) has received, from its getBusStats."""
+    master = xmlrpc.client.ServerProxy(ros.env["ROS_MASTER_URI"])
+    _, _, uri = master.lookupNode("/chapter9_tests", node)
+    _, subscriptions = xmlrpc.client.ServerProxy(uri).getBusStats("/chapter9_tests")
+    return sum(c[2] for name, conns in subscriptions if name == topic for c in conns)
 
 
 def map_from_bag(ros, bag):
@@ -195,3 +205,50 @@ def test_book_bag_holds_the_whole_tf_chain(ros, tmp_path):
         assert edge in edges, edges
     children = {child for _, child in edges}
     assert "camera_depth_frame" in children, edges
+
+
+def test_relative_bag_argument_means_the_launching_shell_folder(ros, tmp_path):
+    """`bag:=data.bag` of our launch files (rosbook_env's rosbag_here): recorded into, and
+    played from, the folder roslaunch was started in, not roslaunch's ~/.ros."""
+    shell, ros_home = tmp_path / "shell", tmp_path / "ros_home"
+    shell.mkdir()
+    ros_home.mkdir()
+    env = {**ros.env, "PWD": str(shell), "ROS_HOME": str(ros_home)}
+    record = tmp_path / "record.launch"
+    record.write_text(
+        '<launch><arg name="bag"/>'
+        '<node pkg="rostopic" type="rostopic" name="talker" args="pub -r 20 /chatter '
+        'std_msgs/String hello"/>'
+        '<node pkg="rosbook_env" type="rosbag_here" name="record" output="screen" '
+        "args=\"record -O '$(arg bag)' /chatter\"/></launch>"
+    )
+    recording = ros.start(["roslaunch", str(record), "bag:=data.bag"], env=env, cwd=shell)
+    ros.wait_for(lambda: (shell / "data.bag.active").exists(), 60, "recording into shell/")
+    ros.wait_for(lambda: subscribes(ros, "/record", "/chatter"), 60, "record to subscribe")
+    ros.wait_for(lambda: messages_received(ros, "/record", "/chatter") >= 5, 60, "messages")
+    ros.stop(recording, timeout=30)
+    assert f"recording to {shell / 'data.bag'}" in ros.output(recording)
+    ros.wait_for(lambda: (shell / "data.bag").exists(), 60, "data.bag to be closed")
+    assert not list(ros_home.glob("*.bag*"))
+
+    play = tmp_path / "play.launch"
+    play.write_text(
+        '<launch><arg name="bag"/><node pkg="rosbook_env" type="rosbag_here" name="play" '
+        'output="screen" required="true" args="play --rate=20 \'$(arg bag)\'"/></launch>'
+    )
+    playing = ros.start(["roslaunch", str(play), "bag:=data.bag"], env=env, cwd=shell)
+    assert playing.wait(timeout=120) == 0, ros.output(playing)
+    assert f"playing {shell / 'data.bag'}" in ros.output(playing)
+
+    # Found nowhere: the error names both folders and the fix, and rosbag is not started.
+    done = subprocess.run(  # the file itself, as roslaunch runs it (rosrun's bash resets $PWD)
+        without_rosrun(["rosrun", "rosbook_env", "rosbag_here", "play", "gone.bag"], env),
+        env=env,
+        cwd=ros_home,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert done.returncode == 1
+    assert f"gone.bag: bag file not found (looked in {ros_home} and {shell}" in done.stderr
+    assert "bag:=$(pwd)/data.bag" in done.stderr

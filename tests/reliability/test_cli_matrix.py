@@ -400,6 +400,12 @@ CASES = {
         2,
         "--sim-param wants NAME=VALUE, got 'range_max'",
     ),
+    "mapping_demo unknown sim-param": (
+        ["rosbook_demo", "mapping_demo", "--sim-param", "scan_fov=270", "--out", "{tmp}/o"],
+        2,
+        "--sim-param scan_fov=270: unknown simulator parameter 'scan_fov'; the simulator "
+        "reads: accel_angular, accel_linear,",
+    ),
     # the book's listings (chapters 3-5, 8) and rqt_lite
     "simple_action_client duration nan": (
         ["basics", "simple_action_client.py", "--duration", "nan"],

@@ -15,7 +15,7 @@ import pytest
 
 REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(REPO / "tests"))
-from roskit import descendants, ros_environment  # noqa: E402
+from roskit import descendants, ros_environment, wait_until  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from demo_run import SIM_SECONDS, run_demo  # noqa: E402
@@ -35,6 +35,7 @@ def test_demo_writes_the_map_overlay_and_figures(main_job):
     assert done.returncode == 0, done.stdout[-4000:] + done.stderr[-4000:]
     for name in ("office_map.pgm", "office_map.yaml", "office_truth.yaml", "office.bag"):
         assert (out / name).stat().st_size > 0, name
+    assert not list(out.glob("*.partial.bag*"))  # the completed run's bag moved into place
     png = (out / "office_overlay.png").read_bytes()
     assert png.startswith(b"\x89PNG\r\n\x1a\n") and len(png) > 10_000
     # The map map_saver wrote loads with map_server's reader and is the book's trinary map.
@@ -136,3 +137,55 @@ def test_demo_ends_naming_slam_gmapping_when_it_dies(tmp_path):
             demo.wait()
     assert demo.returncode == 1, err
     assert "mapping_demo: slam_gmapping died, which ends the run" in err, err
+
+
+@pytest.mark.slow
+@pytest.mark.timeout(300)
+def test_an_interrupted_run_keeps_the_earlier_runs_bag(tmp_path):
+    """Ctrl-C half-way through a run into the --out of an earlier one: the earlier complete
+    bag stays as it was (the run records to office.partial.bag and moves it into place
+    only when it completes), and the output says so."""
+    out = tmp_path / "out"
+    out.mkdir()
+    earlier = out / "office.bag"
+    earlier.write_bytes(b"the earlier run's complete bag")
+    env = ros_environment(0)
+    env.pop("ROS_MASTER_URI")
+    stdout = tmp_path / "stdout"
+    with open(stdout, "w") as sink:
+        demo = subprocess.Popen(
+            ["rosrun", "rosbook_demo", "mapping_demo", "--sim-seconds", "3600"]
+            + ["--progress-every", "2", "--out", str(out)],
+            stdout=sink,
+            stderr=subprocess.PIPE,
+            text=True,
+            env=env,
+            stdin=subprocess.DEVNULL,
+        )
+    try:
+        # Under way: the simulation runs and the recorder has its file open.
+        wait_until(
+            lambda: (
+                demo.poll() is not None
+                or (
+                    "s simulated" in stdout.read_text()
+                    and (out / "office.partial.bag.active").exists()
+                )
+            ),
+            timeout=180,
+            what="the run to be recording",
+        )
+        assert demo.poll() is None, demo.stderr.read()
+        demo.send_signal(signal.SIGINT)  # what Ctrl-C sends it (roslaunch has its own session)
+        _, err = demo.communicate(timeout=120)
+    finally:
+        if demo.poll() is None:
+            demo.kill()
+            demo.wait()
+    assert demo.returncode == 130, err
+    assert earlier.read_bytes() == b"the earlier run's complete bag"
+    assert (
+        "mapping_demo: the run did not finish: office.bag from an earlier run is kept; this "
+        "run's incomplete recording is office.partial.bag" in err
+    ), err
+    assert (out / "office.partial.bag").exists()

@@ -229,7 +229,9 @@ def test_the_check_finds_a_sealed_room_and_a_cramped_start(tmp_path):
 
 
 def test_script_writes_a_named_family_world(tmp_path):
-    env = dict(os.environ, PYTHONPATH=str(PACKAGE / "src"))
+    # The package and rosbook_env (world_check's YAML loader), without a catkin build.
+    sources = (PACKAGE / "src", PACKAGE.parent / "rosbook_env" / "src")
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(map(str, sources)))
     done = subprocess.run(
         [
             sys.executable,

@@ -65,3 +65,10 @@ def test_the_start_forms_the_simulator_takes(tmp_path):
 def test_a_device_is_refused_not_read():
     with pytest.raises(ValueError, match="/dev/zero: not a regular file"):
         start_pose("/dev/zero", WORLDS)
+
+
+def test_a_key_given_twice_is_refused_naming_the_file_and_the_key(tmp_path):
+    world = tmp_path / "w.yaml"
+    world.write_text("image: w.pgm\nstart: [1, 2, 0]\nresolution: 0.05\nstart: [3, 4, 0]\n")
+    with pytest.raises(ValueError, match=r"w.yaml: .*key 'start' given twice \(lines 2 and 4\)"):
+        start_pose(str(world), WORLDS)

@@ -188,3 +188,13 @@ def test_png_declaring_a_huge_picture_is_refused(tmp_path):
     (tmp_path / "bomb.png").write_bytes(png)
     with pytest.raises(map_io.MapImageError, match="bomb.png: too large for a map"):
         map_io.load_map(write_yaml(tmp_path / "b.yaml", "bomb.png"))
+
+
+def test_a_key_given_twice_is_refused_naming_the_file_and_the_key(tmp_path):
+    """PyYAML and yaml-cpp keep the last silently: a pasted `resolution:` would rescale it."""
+    write_pgm_p5(tmp_path / "m.pgm", [[0, 254]])
+    path = tmp_path / "twice.yaml"
+    text = "".join(f"{k}: {v}\n" for k, v in GOOD.items()) + "resolution: 0.1\n"
+    path.write_text(text)
+    with pytest.raises(map_io.MapYamlError, match=r"twice.yaml: .*key 'resolution' given twice"):
+        map_io.load_map(path)

@@ -1,5 +1,6 @@
 import sys
 from pathlib import Path
 
-# The package's ROS-free module, without a catkin build.
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
+# The package's ROS-free module and rosbook_env (its YAML loader), without a catkin build.
+PACKAGE = Path(__file__).resolve().parent.parent
+sys.path[:0] = [str(PACKAGE / "src"), str(PACKAGE.parent / "rosbook_env" / "src")]

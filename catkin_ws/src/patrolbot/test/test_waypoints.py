@@ -20,3 +20,10 @@ def test_bad_files_are_named(tmp_path):
         load_waypoints(path)
     with pytest.raises(WaypointError, match="missing.yaml"):
         load_waypoints(tmp_path / "missing.yaml")
+
+
+def test_a_key_given_twice_in_a_waypoint_is_refused(tmp_path):
+    path = tmp_path / "twice.yaml"
+    path.write_text("waypoints:\n  - {x: 1, y: 2}\n  - {x: 3, y: 4, x: 5}\n")
+    with pytest.raises(WaypointError, match=r"twice.yaml: key 'x' given twice"):
+        load_waypoints(path)

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-import yaml
+from rosbook_env.yaml_files import YamlCppLoader, load_unique
 from scipy import ndimage
 
 ROBOT_RADIUS = 0.18  # m: the Kobuki
@@ -55,7 +55,7 @@ def read_pgm(path):
 def load_grid(yaml_path):
     """The world's walls and primitives as a Grid (cells whose centre is inside a solid)."""
     yaml_path = Path(yaml_path)
-    spec = yaml.safe_load(yaml_path.read_text())
+    spec = load_unique(yaml_path.read_text(), YamlCppLoader)  # as the simulator reads it
     pixels = read_pgm(yaml_path.parent / spec["image"])
     occupancy = (255 - pixels.astype(float)) / 255
     if spec.get("negate", 0):

@@ -6,28 +6,17 @@ world in `worlds_dir`. A world file without `start` starts the robot at the orig
 """
 
 import math
-import re
 from pathlib import Path
 
 import yaml
 from rosbook_env.files import special_file_note
+from rosbook_env.yaml_files import YamlCppLoader, load_unique
 
 
 def world_path(world, worlds_dir):
     if "/" in world or (len(world) > 5 and world.endswith(".yaml")):
         return Path(world)
     return Path(worlds_dir) / f"{world}.yaml"
-
-
-class _Loader(yaml.SafeLoader):
-    """Reads `1e1` as a number, as the simulator's yaml-cpp does (YAML 1.1 floats need a dot)."""
-
-
-_Loader.add_implicit_resolver(
-    "tag:yaml.org,2002:float",
-    re.compile(r"^[-+]?(?:[0-9][0-9_]*)(?:\.[0-9_]*)?[eE][-+]?[0-9]+$"),
-    list("-+0123456789"),
-)
 
 
 def start_pose(world, worlds_dir):
@@ -40,7 +29,8 @@ def start_pose(world, worlds_dir):
         special = special_file_note(path)
         if special:
             raise ValueError(f"world file {path}: {special}; give a world YAML file")
-        spec = yaml.load(path.read_text(), Loader=_Loader)
+        # yaml-cpp's numbers (as the simulator reads the file), no duplicate keys
+        spec = load_unique(path.read_text(), YamlCppLoader)
     except OSError as err:
         raise ValueError(f"cannot read world file {path}: {err.strerror}") from err
     except yaml.YAMLError as err:

@@ -2,14 +2,14 @@
 
 import json
 import math
-import re
 from dataclasses import dataclass
 from pathlib import Path
 
 import yaml
-from rosbook_env.files import special_file_note
+from rosbook_env.files import looked_in_note, resolve_user_path, special_file_note
+from rosbook_env.yaml_files import YamlCppLoader, load_unique
 
-from map_server.errors import MapFileNotFoundError, MapYamlError, cwd_note
+from map_server.errors import MapFileNotFoundError, MapYamlError
 
 MODES = ("trinary", "scale", "raw")
 REQUIRED_KEYS = ("image", "resolution", "origin", "negate", "occupied_thresh", "free_thresh")
@@ -21,18 +21,6 @@ SAVED_OCCUPIED_THRESH, SAVED_FREE_THRESH = 0.65, 0.196
 # nav_msgs/MapMetaData carries the resolution as a float32: its smallest normal and its
 # largest value.
 FLOAT32_TINY, FLOAT32_MAX = 1.1754943508222875e-38, 3.4028234663852886e38
-
-
-class _MapLoader(yaml.SafeLoader):
-    """SafeLoader that also reads `5e-2` and `1e3` as numbers, as YAML 1.2 and the original
-    map_server's yaml-cpp do (PyYAML's YAML 1.1 floats need a dot: it read `5e-2` as text)."""
-
-
-_MapLoader.add_implicit_resolver(
-    "tag:yaml.org,2002:float",
-    re.compile(r"^[-+]?(?:[0-9][0-9_]*)(?:\.[0-9_]*)?[eE][-+]?[0-9]+$"),
-    list("-+0123456789"),
-)
 
 
 @dataclass(frozen=True)
@@ -102,7 +90,7 @@ def parse_map_yaml(text, yaml_path):
     yaml_path = Path(yaml_path)
     where = str(yaml_path)
     try:
-        doc = yaml.load(text, Loader=_MapLoader)
+        doc = load_unique(text, YamlCppLoader)  # yaml-cpp's numbers, no duplicate keys
     except yaml.YAMLError as err:
         raise MapYamlError(f"{where}: not valid YAML: {err}") from None
     except RecursionError:  # PyYAML's parser recurses once per nesting level
@@ -144,7 +132,10 @@ def parse_map_yaml(text, yaml_path):
 
 
 def read_map_yaml(yaml_path):
-    yaml_path = Path(yaml_path)
+    """Read and check a map YAML. A relative path missing from the cwd is looked for in the
+    launching shell's folder (roslaunch runs nodes in ~/.ros): rosbook_env.files."""
+    given = yaml_path
+    yaml_path = Path(resolve_user_path(yaml_path))
     special = special_file_note(yaml_path)
     if special:
         raise MapYamlError(f"{yaml_path}: {special}; give the map YAML file")
@@ -152,7 +143,7 @@ def read_map_yaml(yaml_path):
         text = yaml_path.read_text(encoding="utf-8")
     except FileNotFoundError:
         raise MapFileNotFoundError(
-            f"{yaml_path}: map YAML file not found{cwd_note(yaml_path)}"
+            f"{yaml_path}: map YAML file not found{looked_in_note(given)}"
         ) from None
     except IsADirectoryError:
         raise MapYamlError(f"{yaml_path}: is a directory, not a map YAML file") from None

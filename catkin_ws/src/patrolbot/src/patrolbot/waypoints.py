@@ -3,6 +3,7 @@
 import math
 
 import yaml
+from rosbook_env.yaml_files import load_unique
 
 
 class WaypointError(ValueError):
@@ -18,7 +19,7 @@ def load_waypoints(path):
     `map` frame. Raises WaypointError naming the file and the entry."""
     try:
         with open(path) as f:
-            data = yaml.safe_load(f)
+            data = load_unique(f)  # a key given twice (x: 1 ... x: 2) is an error
     except (OSError, yaml.YAMLError) as e:
         raise WaypointError(f"{path}: {e}") from None
     if isinstance(data, dict):
