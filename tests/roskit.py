@@ -83,6 +83,29 @@ def without_rosrun(cmd, env):
     return cmd if path is None else [path, *cmd[3:]]
 
 
+def launched_from_shell(ros, tmp_path):
+    """The folders of `cd shell && roslaunch ...`: roslaunch runs its nodes in ROS_HOME
+    (~/.ros) and leaves $PWD as the shell's folder. Returns (shell, ros_home, env)."""
+    shell, ros_home = tmp_path / "shell", tmp_path / "ros_home"
+    shell.mkdir()
+    ros_home.mkdir()
+    env = {**ros.env, "PWD": str(shell), "ROS_HOME": str(ros_home)}
+    return shell, ros_home, env
+
+
+def run_in_ros_home(cmd, env, ros_home):
+    """Run a `rosrun PACKAGE NODE ...` command as roslaunch runs the node: its file itself (rosrun
+    is a bash script, and bash resets $PWD to its cwd), in `ros_home`; output captured."""
+    return subprocess.run(
+        without_rosrun(cmd, env),
+        env=env,
+        cwd=ros_home,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+
+
 def launch_node_list(launch_args, env):
     """The node names `roslaunch --nodes LAUNCH_ARGS` prints under `env`, from roslaunch's own
     loader in this process: a roslaunch process costs over a CPU second to start, and the

@@ -6,7 +6,6 @@ sim time, save it with map_saver, serve it with map_server, and check it against
 import math
 import re
 import signal
-import subprocess
 import xmlrpc.client
 from pathlib import Path
 
@@ -16,7 +15,7 @@ from map_server.map_io import load_map
 from rosbook_eval.grids import near_wall_share, occupied_points
 from rosbook_eval.scoring import place_grid
 from rosbook_eval.truth import truth_grid
-from roskit import without_rosrun
+from roskit import launched_from_shell, run_in_ros_home
 
 SIM_SECONDS = 150.0
 SPEED = 5.0
@@ -210,10 +209,7 @@ def test_book_bag_holds_the_whole_tf_chain(ros, tmp_path):
 def test_relative_bag_argument_means_the_launching_shell_folder(ros, tmp_path):
     """`bag:=data.bag` of our launch files (rosbook_env's rosbag_here): recorded into, and
     played from, the folder roslaunch was started in, not roslaunch's ~/.ros."""
-    shell, ros_home = tmp_path / "shell", tmp_path / "ros_home"
-    shell.mkdir()
-    ros_home.mkdir()
-    env = {**ros.env, "PWD": str(shell), "ROS_HOME": str(ros_home)}
+    shell, ros_home, env = launched_from_shell(ros, tmp_path)
     record = tmp_path / "record.launch"
     record.write_text(
         '<launch><arg name="bag"/>'
@@ -241,13 +237,8 @@ def test_relative_bag_argument_means_the_launching_shell_folder(ros, tmp_path):
     assert f"playing {shell / 'data.bag'}" in ros.output(playing)
 
     # Found nowhere: the error names both folders and the fix, and rosbag is not started.
-    done = subprocess.run(  # the file itself, as roslaunch runs it (rosrun's bash resets $PWD)
-        without_rosrun(["rosrun", "rosbook_env", "rosbag_here", "play", "gone.bag"], env),
-        env=env,
-        cwd=ros_home,
-        capture_output=True,
-        text=True,
-        timeout=120,
+    done = run_in_ros_home(
+        ["rosrun", "rosbook_env", "rosbag_here", "play", "gone.bag"], env, ros_home
     )
     assert done.returncode == 1
     assert f"gone.bag: bag file not found (looked in {ros_home} and {shell}" in done.stderr

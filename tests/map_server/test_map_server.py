@@ -1,6 +1,5 @@
 """map_server as the book runs it: a YAML in, a latched /map, /map_metadata and /static_map out."""
 
-import subprocess
 import sys
 import time
 from pathlib import Path
@@ -12,7 +11,7 @@ import yaml
 REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(REPO / "catkin_ws" / "src" / "map_server" / "src"))
 from map_server import map_io  # noqa: E402
-from roskit import without_rosrun  # noqa: E402
+from roskit import launched_from_shell, run_in_ros_home  # noqa: E402
 
 ORIGIN = (-1.5, 2.0, 0.0)
 RESOLUTION = 0.1
@@ -147,16 +146,6 @@ def test_bad_yaml_is_a_clear_error_and_harms_nothing(ros, tmp_path):
     assert ros.echo("/map")[0]["msg"]["info"]["width"] == 7
 
 
-def launched_from_shell(ros, tmp_path):
-    """The folders of `cd shell && roslaunch ...`: roslaunch runs its nodes in ROS_HOME
-    (~/.ros) and leaves $PWD as the shell's folder. Returns (shell, ros_home, env)."""
-    shell, ros_home = tmp_path / "shell", tmp_path / "ros_home"
-    shell.mkdir()
-    ros_home.mkdir()
-    env = {**ros.env, "PWD": str(shell), "ROS_HOME": str(ros_home)}
-    return shell, ros_home, env
-
-
 def test_relative_map_file_under_roslaunch_is_read_from_the_shell_folder(ros, tmp_path):
     """`rosrun map_server map_saver -f mymap`, then `roslaunch ... map_file:=mymap.yaml` from
     the same folder: the map is found although the node runs in ~/.ros, and the log says
@@ -182,16 +171,7 @@ def test_relative_map_file_under_roslaunch_is_read_from_the_shell_folder(ros, tm
 
 def test_relative_map_file_found_nowhere_names_both_folders_and_the_fix(ros, tmp_path):
     shell, ros_home, env = launched_from_shell(ros, tmp_path)
-    # The node's file itself, as roslaunch runs it: rosrun is a bash script, and bash resets
-    # $PWD to its cwd.
-    done = subprocess.run(
-        without_rosrun(["rosrun", "map_server", "map_server", "mymap.yaml"], env),
-        env=env,
-        cwd=ros_home,
-        capture_output=True,
-        text=True,
-        timeout=120,
-    )
+    done = run_in_ros_home(["rosrun", "map_server", "map_server", "mymap.yaml"], env, ros_home)
     assert done.returncode == 1
     assert "mymap.yaml: map YAML file not found" in done.stderr
     assert f"looked in {ros_home} and {shell}" in done.stderr

@@ -98,24 +98,30 @@ def test_demo_rejects_nonsense_arguments(tmp_path):
     assert "--sim-seconds" in done.stderr
 
 
-@pytest.mark.slow
-@pytest.mark.timeout(300)
-def test_demo_ends_naming_slam_gmapping_when_it_dies(tmp_path):
-    """slam_gmapping is required: killed mid-run, the main job stops at once and says which
-    node died, instead of exploring on without a map."""
+def start_long_demo(out, stdout):
+    """The main job with an hour of sim time (long enough to be interrupted), its own
+    roscore, progress every 2 sim s into the file `stdout`; stderr stays a pipe."""
     env = ros_environment(0)
     env.pop("ROS_MASTER_URI")
-    stdout = tmp_path / "stdout"
     with open(stdout, "w") as sink:
-        demo = subprocess.Popen(
+        return subprocess.Popen(
             ["rosrun", "rosbook_demo", "mapping_demo", "--sim-seconds", "3600"]
-            + ["--progress-every", "2", "--out", str(tmp_path / "out")],
+            + ["--progress-every", "2", "--out", str(out)],
             stdout=sink,
             stderr=subprocess.PIPE,
             text=True,
             env=env,
             stdin=subprocess.DEVNULL,
         )
+
+
+@pytest.mark.slow
+@pytest.mark.timeout(300)
+def test_demo_ends_naming_slam_gmapping_when_it_dies(tmp_path):
+    """slam_gmapping is required: killed mid-run, the main job stops at once and says which
+    node died, instead of exploring on without a map."""
+    stdout = tmp_path / "stdout"
+    demo = start_long_demo(tmp_path / "out", stdout)
     try:
 
         def slam_pid():
@@ -149,19 +155,8 @@ def test_an_interrupted_run_keeps_the_earlier_runs_bag(tmp_path):
     out.mkdir()
     earlier = out / "office.bag"
     earlier.write_bytes(b"the earlier run's complete bag")
-    env = ros_environment(0)
-    env.pop("ROS_MASTER_URI")
     stdout = tmp_path / "stdout"
-    with open(stdout, "w") as sink:
-        demo = subprocess.Popen(
-            ["rosrun", "rosbook_demo", "mapping_demo", "--sim-seconds", "3600"]
-            + ["--progress-every", "2", "--out", str(out)],
-            stdout=sink,
-            stderr=subprocess.PIPE,
-            text=True,
-            env=env,
-            stdin=subprocess.DEVNULL,
-        )
+    demo = start_long_demo(out, stdout)
     try:
         # Under way: the simulation runs and the recorder has its file open.
         wait_until(
