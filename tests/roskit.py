@@ -269,7 +269,7 @@ class RosGraph:
                 os.killpg(proc.pid, sig)
                 proc.wait(timeout=timeout)
             except (ProcessLookupError, subprocess.TimeoutExpired):
-                _kill_group(proc)
+                kill_tree(proc)
         return proc.returncode
 
     def close(self, timeout=5):
@@ -511,7 +511,9 @@ def descendants_of(pids):
     return found
 
 
-def _kill_group(proc):
+def kill_tree(proc):
+    """SIGKILL `proc`, its process group and every process below it (roslaunch's nodes run
+    in sessions of their own)."""
     _kill_groups([proc])
 
 

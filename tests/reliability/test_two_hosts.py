@@ -20,7 +20,7 @@ from rosbook_eval.grids import near_wall_share, occupied_points
 from rosbook_eval.poses import compose, inverse
 from rosbook_eval.scoring import DEFAULT_TOLERANCE, place_grid
 from rosbook_eval.truth import TRUTH_RESOLUTION, load_grid
-from roskit import PROBE, RosGraph, _kill_group, read_jsonl, ros_environment, wait_until
+from roskit import PROBE, RosGraph, kill_tree, read_jsonl, ros_environment, wait_until
 
 SUBNET = "10.77.0"  # private; each namespace has its own stack, so runs do not clash
 HOST_A, HOST_B = f"{SUBNET}.1", f"{SUBNET}.2"
@@ -116,7 +116,7 @@ class Host:
             try:
                 proc.wait(timeout=10)
             except subprocess.TimeoutExpired:
-                _kill_group(proc)
+                kill_tree(proc)
 
 
 @pytest.fixture

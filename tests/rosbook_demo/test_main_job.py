@@ -15,7 +15,7 @@ import pytest
 
 REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(REPO / "tests"))
-from roskit import descendants, ros_environment, wait_until  # noqa: E402
+from roskit import descendants, kill_tree, ros_environment, wait_until  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from demo_run import SIM_SECONDS, run_demo  # noqa: E402
@@ -98,21 +98,38 @@ def test_demo_rejects_nonsense_arguments(tmp_path):
     assert "--sim-seconds" in done.stderr
 
 
-def start_long_demo(out, stdout):
+def start_long_demo(out, logs):
     """The main job with an hour of sim time (long enough to be interrupted), its own
-    roscore, progress every 2 sim s into the file `stdout`; stderr stays a pipe."""
+    roscore, progress every 2 sim s; its output in the files logs/stdout and logs/stderr."""
     env = ros_environment(0)
     env.pop("ROS_MASTER_URI")
-    with open(stdout, "w") as sink:
+    with open(logs / "stdout", "w") as stdout, open(logs / "stderr", "w") as stderr:
         return subprocess.Popen(
             ["rosrun", "rosbook_demo", "mapping_demo", "--sim-seconds", "3600"]
             + ["--progress-every", "2", "--out", str(out)],
-            stdout=sink,
-            stderr=subprocess.PIPE,
-            text=True,
+            stdout=stdout,
+            stderr=stderr,
             env=env,
             stdin=subprocess.DEVNULL,
+            # As from a terminal, where Ctrl-C interrupts it: a test run in the background
+            # (a CI job, `make test &`) ignores SIGINT, and its children would inherit that.
+            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
         )
+
+
+def end_of_demo(demo, logs, timeout=120):
+    """Wait for the main job to exit; its stderr. If it does not, kill it and fail with the
+    end of what it printed."""
+    try:
+        demo.wait(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        kill_tree(demo)  # and the roslaunch it started in a session of its own
+        raise AssertionError(
+            f"mapping_demo did not exit within {timeout} s:\n"
+            + (logs / "stdout").read_text()[-3000:]
+            + (logs / "stderr").read_text()[-3000:]
+        ) from None
+    return (logs / "stderr").read_text()
 
 
 @pytest.mark.slow
@@ -121,7 +138,7 @@ def test_demo_ends_naming_slam_gmapping_when_it_dies(tmp_path):
     """slam_gmapping is required: killed mid-run, the main job stops at once and says which
     node died, instead of exploring on without a map."""
     stdout = tmp_path / "stdout"
-    demo = start_long_demo(tmp_path / "out", stdout)
+    demo = start_long_demo(tmp_path / "out", tmp_path)
     try:
 
         def slam_pid():
@@ -132,15 +149,14 @@ def test_demo_ends_naming_slam_gmapping_when_it_dies(tmp_path):
 
         deadline = time.monotonic() + 180
         while slam_pid() is None:
-            assert demo.poll() is None, demo.stderr.read()
+            assert demo.poll() is None, (tmp_path / "stderr").read_text()
             assert time.monotonic() < deadline, "no slam_gmapping under a running main job"
             time.sleep(0.2)
         os.kill(slam_pid(), signal.SIGKILL)
-        _, err = demo.communicate(timeout=120)
+        err = end_of_demo(demo, tmp_path)
     finally:
         if demo.poll() is None:
-            demo.kill()
-            demo.wait()
+            kill_tree(demo)
     assert demo.returncode == 1, err
     assert "mapping_demo: slam_gmapping died, which ends the run" in err, err
 
@@ -156,7 +172,7 @@ def test_an_interrupted_run_keeps_the_earlier_runs_bag(tmp_path):
     earlier = out / "office.bag"
     earlier.write_bytes(b"the earlier run's complete bag")
     stdout = tmp_path / "stdout"
-    demo = start_long_demo(out, stdout)
+    demo = start_long_demo(out, tmp_path)
     try:
         # Under way: the simulation runs and the recorder has its file open.
         wait_until(
@@ -170,13 +186,12 @@ def test_an_interrupted_run_keeps_the_earlier_runs_bag(tmp_path):
             timeout=180,
             what="the run to be recording",
         )
-        assert demo.poll() is None, demo.stderr.read()
+        assert demo.poll() is None, (tmp_path / "stderr").read_text()
         demo.send_signal(signal.SIGINT)  # what Ctrl-C sends it (roslaunch has its own session)
-        _, err = demo.communicate(timeout=120)
+        err = end_of_demo(demo, tmp_path)
     finally:
         if demo.poll() is None:
-            demo.kill()
-            demo.wait()
+            kill_tree(demo)
     assert demo.returncode == 130, err
     assert earlier.read_bytes() == b"the earlier run's complete bag"
     assert (
