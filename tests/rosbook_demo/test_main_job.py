@@ -8,7 +8,6 @@ import re
 import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
@@ -147,11 +146,13 @@ def test_demo_ends_naming_slam_gmapping_when_it_dies(tmp_path):
             pids = [p for p, cmd in descendants(demo.pid).items() if "__name:=slam_gmapping" in cmd]
             return pids[0] if pids else None
 
-        deadline = time.monotonic() + 180
-        while slam_pid() is None:
-            assert demo.poll() is None, (tmp_path / "stderr").read_text()
-            assert time.monotonic() < deadline, "no slam_gmapping under a running main job"
-            time.sleep(0.2)
+        wait_until(
+            lambda: demo.poll() is not None or slam_pid() is not None,
+            timeout=180,
+            what="slam_gmapping under a running main job",
+            interval=0.2,
+        )
+        assert demo.poll() is None, (tmp_path / "stderr").read_text()
         os.kill(slam_pid(), signal.SIGKILL)
         err = end_of_demo(demo, tmp_path)
     finally:
