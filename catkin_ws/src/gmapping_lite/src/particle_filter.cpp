@@ -87,15 +87,20 @@ void ParticleFilter::resample(const std::vector<double>& weights) {
 OdometryPrior ParticleFilter::odometryPrior(const Pose2& inc) const {
   // How far a match may move a particle from odometry's prediction (standard deviations):
   // - the motion model's spread for this increment (srr, srt, str, stt as gmapping uses them);
-  // - timing: a scan stamped up to one scan period off its odometry (a laser's acquisition
-  //   time, a driver's stamping, a simulator's step) is placed off by the distance and angle
-  //   the robot covers in that period; a constant offset cancels between the two ends of the
-  //   increment while the speeds hold, so it counts as far as they changed (starting or
-  //   stopping a turn on the spot).
+  // - timing: a scan paired with odometry from another instant than the one it saw is placed
+  //   off by the distance and angle the robot covers in between; a constant offset cancels
+  //   between the two ends of the increment while the speeds hold, so it counts as far as they
+  //   changed (starting or stopping a turn on the spot). The offset's sd has two parts:
+  //   odometry is known at its own samples, and a scan may be paired with the sample a whole
+  //   odometry period To from what it saw (Stage publishes a world step's pose with the next
+  //   step's scan), an offset of To; and the laser's sweep or acquisition within its own period
+  //   Ts is uniform over it, sd Ts / sqrt(12). Together sqrt(Ts^2 / 12 + To^2). While To is
+  //   not known (setOdometryPeriod), Ts alone: the bound of an offset within one scan period.
   // Nothing else: the map's own resolution limits the scan, not odometry, and is in the scan's
   // likelihood (sigma); a floor here would let a scan move a pose odometry knows well.
   const double dist = std::hypot(inc.x, inc.y), turn = std::fabs(inc.theta);
-  const double period = scan_period_ > 0.0 ? scan_period_ : 0.0;
+  const double ts = scan_period_ > 0.0 ? scan_period_ : 0.0, to = odometry_period_;
+  const double period = to > 0.0 ? std::sqrt(ts * ts / 12.0 + to * to) : ts;
   const MotionNoise& m = params_.motion;
   return {m.srr * dist + m.str * turn + period * std::fabs(speed_ - last_update_speed_),
           m.stt * turn + m.srt * dist + period * std::fabs(turn_rate_ - last_update_turn_rate_)};

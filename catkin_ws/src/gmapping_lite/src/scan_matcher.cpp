@@ -251,6 +251,32 @@ double ScanMatcher::objective(const Pose2& pose, const Pose2& centre, const Scan
          priorLog(pose, centre, prior);
 }
 
+ScanPoints ScanMatcher::knownPoints(const Pose2& pose, const ScanPoints& all, double reach) const {
+  // The pose itself, then moved by +-reach along x and along y.
+  const Pose2 poses[5] = {pose,
+                          {pose.x + reach, pose.y, pose.theta},
+                          {pose.x - reach, pose.y, pose.theta},
+                          {pose.x, pose.y + reach, pose.theta},
+                          {pose.x, pose.y - reach, pose.theta}};
+  const int count = reach > 0.0 ? 5 : 1;
+  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
+  ScanPoints out;
+  out.points.reserve(all.points.size());
+  for (const auto& p : all.points) {
+    bool known = true;
+    for (int k = 0; k < count && known; ++k) {
+      const EndPoint e =
+          field_.query(poses[k].x + c * p.hx - s * p.hy, poses[k].y + s * p.hx + c * p.hy,
+                       c * p.ux - s * p.uy, s * p.ux + c * p.uy);
+      known = e.state != EndState::kUnknown;
+    }
+    if (!known) continue;
+    out.points.push_back(p);
+    out.beams += p.beams;
+  }
+  return out;
+}
+
 double ScanMatcher::optimize(const Pose2& start, const ScanPoints& scan, Pose2* best,
                              const OdometryPrior& prior) const {
   return optimizeFrom(start, start, scan, best, prior);
@@ -261,18 +287,16 @@ double ScanMatcher::optimizeFrom(const Pose2& start, const Pose2& centre,
                                  const OdometryPrior& prior) const {
   // Match with the points that land where the map has seen something: an end point in space
   // never seen (a wall beyond the mapped end of the one in view, a new room) says nothing of
-  // the pose, and would only pull the scan towards the mapped part.
-  ScanPoints scan;
-  {
-    const double c = std::cos(start.theta), s = std::sin(start.theta);
-    for (const auto& p : all.points) {
-      const EndPoint e = field_.query(start.x + c * p.hx - s * p.hy, start.y + s * p.hx + c * p.hy,
-                                      c * p.ux - s * p.uy, s * p.ux + c * p.uy);
-      if (e.state == EndState::kUnknown) continue;
-      scan.points.push_back(p);
-      scan.beams += p.beams;
-    }
-  }
+  // the pose, and would only pull the scan towards the mapped part. "Seen" wherever the climb
+  // may carry the point (knownPoints): the climb is held within about the prior's sd of its
+  // centre, and starts offset from it by the start's distance from the centre, so its reach
+  // is that offset plus the prior's translation sd. Translation only: a reach in heading
+  // sweeps an end point by the reach times its range (with gmapping's default motion noise
+  // about 0.2 rad an update: a metre at 5 m), which leaves little of the scan (twelfth attempt, a2 against
+  // a6, bench/slam_robustness_notes.md).
+  const double reach = std::hypot(start.x - centre.x, start.y - centre.y) +
+                       std::max(0.0, prior.sigma_xy);
+  const ScanPoints scan = knownPoints(start, all, reach);
   Pose2 current = start;
   double ldelta = params_.lstep, adelta = params_.astep;
   const int levels = std::max(1, params_.iterations);

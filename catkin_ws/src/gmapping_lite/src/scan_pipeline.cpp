@@ -149,6 +149,7 @@ ScanOutcome ScanPipeline::process(const sensor_msgs::LaserScan& scan) {
   }
   const Pose2 odom(odom_tf.transform.translation.x, odom_tf.transform.translation.y,
                    tf2::getYaw(odom_tf.transform.rotation));
+  filter_->setOdometryPeriod(odometry_period_);
   outcome.update = filter_->addScan(odom, stamp, *geometry,
                                     toRanges(scan.ranges, scan.range_min, scan.range_max));
   outcome.result = outcome.update.processed ? ScanResult::kUpdated : ScanResult::kNotUpdated;

@@ -75,6 +75,8 @@ SlamGmappingNode::SlamGmappingNode() : private_("~"), tf_listener_(tf_buffer_) {
         return waitForTransform(target, source, stamp, out, error);
       });
 
+  odom_frame_ = pipeline_->odomFrame();
+  base_frame_ = pipeline_->baseFrame();
   map_pub_ = node_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
   metadata_pub_ = node_.advertise<nav_msgs::MapMetaData>("map_metadata", 1, true);
   entropy_pub_ = private_.advertise<std_msgs::Float64>("entropy", 1, true);
@@ -84,6 +86,8 @@ SlamGmappingNode::SlamGmappingNode() : private_("~"), tf_listener_(tf_buffer_) {
     while (auto scan = scans_.take()) processScan(*scan);
   });
   scan_sub_ = node_.subscribe("scan", 20, &SlamGmappingNode::onScan, this);
+  // Beside tf's own listener: the odometry samples' stamps, each as it arrives.
+  tf_sub_ = node_.subscribe("/tf", 100, &SlamGmappingNode::onTf, this);
   if (transform_publish_period_ > 0.0)
     tf_thread_ = std::thread([this] { publishTransformLoop(); });
   const SlamParams& params = pipeline_->params();
@@ -141,6 +145,19 @@ void SlamGmappingNode::onScan(const sensor_msgs::LaserScan::ConstPtr& scan) {
   scans_.put(scan);
 }
 
+// Odometry's samples on /tf (odom_frame -> base_frame), for its period; roscpp does not run
+// one subscription's callback concurrently, so odometry_period_ needs no lock.
+void SlamGmappingNode::onTf(const tf2_msgs::TFMessage::ConstPtr& message) {
+  bool seen = false;
+  for (const auto& t : message->transforms) {
+    if (stripSlash(t.header.frame_id) != odom_frame_ || stripSlash(t.child_frame_id) != base_frame_)
+      continue;
+    odometry_period_.add(t.header.stamp.toSec());
+    seen = true;
+  }
+  if (seen) odometry_seconds_ = odometry_period_.period();
+}
+
 // At most one line every 30 wall seconds: a fast simulator runs many scan periods a second,
 // and the count in each line says how it went since.
 void SlamGmappingNode::warnSkipped() {
@@ -188,6 +205,7 @@ void SlamGmappingNode::processScan(const sensor_msgs::LaserScan::ConstPtr& scan)
   // between two updates' numbers that is shorter than their time apart shows skipped scans.
   const int index = ++scans_taken_;
   warnSkipped();
+  pipeline_->setOdometryPeriod(odometry_seconds_);
   const ScanOutcome outcome = pipeline_->process(*scan);
   for (const ScanNote& note : outcome.notes) {
     if (note.warning)

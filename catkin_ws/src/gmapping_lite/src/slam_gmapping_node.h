@@ -1,7 +1,9 @@
 // slam_gmapping: gmapping's ROS interface around the gmapping_lite particle filter.
 //
-// Subscribes `scan`; reads odometry from tf (odom_frame -> base_frame at each scan's stamp)
-// and the laser's mounting (base_frame -> scan frame, once per frame and beam layout).
+// Subscribes `scan` and /tf (odometry's sample period, from the stamps of the odom_frame ->
+// base_frame transforms: OdometryPeriod); reads odometry from tf (odom_frame -> base_frame at
+// each scan's stamp) and the laser's mounting (base_frame -> scan frame, once per frame and
+// beam layout).
 // Publishes `map` and `map_metadata` (latched), `~entropy`, tf map_frame -> odom_frame,
 // `/diagnostics` (scan counts, with each map), and serves `dynamic_map`.
 //
@@ -24,10 +26,12 @@
 #include <nav_msgs/GetMap.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <sensor_msgs/LaserScan.h>
+#include <tf2_msgs/TFMessage.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
 #include "gmapping_lite/newest_slot.h"
+#include "gmapping_lite/odometry_period.h"
 #include "gmapping_lite/pose2.h"
 #include "gmapping_lite/scan_pipeline.h"
 
@@ -47,6 +51,7 @@ class SlamGmappingNode {
                         const ros::Time& stamp, geometry_msgs::TransformStamped* out,
                         std::string* error);
   void onScan(const sensor_msgs::LaserScan::ConstPtr& scan);
+  void onTf(const tf2_msgs::TFMessage::ConstPtr& message);
   void processScan(const sensor_msgs::LaserScan::ConstPtr& scan);
   void warnSkipped();
   void logDrop(const ScanOutcome& outcome);
@@ -60,12 +65,15 @@ class SlamGmappingNode {
   tf2_ros::TransformListener tf_listener_;
   ros::Publisher map_pub_, metadata_pub_, entropy_pub_, diagnostics_pub_;
   ros::ServiceServer map_service_;
-  ros::Subscriber scan_sub_;
+  ros::Subscriber scan_sub_, tf_sub_;
 
   std::string map_frame_;
   int throttle_scans_ = 1;
   double map_update_interval_ = 5.0, transform_publish_period_ = 0.05, tf_wait_ = 0.5;
   std::unique_ptr<ScanPipeline> pipeline_;  // used by the worker thread only
+  std::string odom_frame_, base_frame_;     // as the pipeline has them (no leading '/')
+  OdometryPeriod odometry_period_;          // by onTf only
+  std::atomic<double> odometry_seconds_{0.0};  // its period, for the worker (0: unknown)
   std::atomic<int> scans_received_{0};
   NewestSlot<sensor_msgs::LaserScan::ConstPtr> scans_;
   int scans_taken_ = 0;  // by the worker thread only

@@ -23,6 +23,7 @@
 #include <tf2_msgs/TFMessage.h>
 
 #include "gmapping_lite/occupancy.h"
+#include "gmapping_lite/odometry_period.h"
 #include "gmapping_lite/param_table.h"
 #include "gmapping_lite/particle_filter.h"
 #include "gmapping_lite/scan_pipeline.h"
@@ -143,10 +144,14 @@ int main(int argc, char** argv) {
   // Pass 1: all of tf, so each scan can be placed whatever order the bag holds it in. The
   // buffer must hold the span of the transforms' stamps, not of the bag's record times: a
   // simulation recorded without use_sim_time runs faster than the recorder's wall clock.
+  // Odometry's sample period from the stamps of the odom -> base transforms, for the filter's
+  // timing term (OdometryPeriod).
   rosbag::View tf_view(bag, rosbag::TopicQuery(std::vector<std::string>{"/tf", "/tf_static"}));
   std::vector<std::pair<tf2_msgs::TFMessage::ConstPtr, bool>> tf_messages;
   double first_tf = 0, last_tf = 0;
   bool have_stamp = false;
+  OdometryPeriod odometry_period;
+  const std::string odom_frame = stripSlash(o.odom_frame), base_frame = stripSlash(o.base_frame);
   for (const rosbag::MessageInstance& m : tf_view) {
     const auto msg = m.instantiate<tf2_msgs::TFMessage>();
     if (!msg) continue;
@@ -154,6 +159,8 @@ int main(int argc, char** argv) {
     for (const auto& t : msg->transforms) {
       if (is_static) continue;
       const double stamp = t.header.stamp.toSec();
+      if (stripSlash(t.header.frame_id) == odom_frame && stripSlash(t.child_frame_id) == base_frame)
+        odometry_period.add(stamp);
       first_tf = have_stamp ? std::min(first_tf, stamp) : stamp;
       last_tf = have_stamp ? std::max(last_tf, stamp) : stamp;
       have_stamp = true;
@@ -190,6 +197,7 @@ int main(int argc, char** argv) {
   options.max_range_set = o.max_range_set;
   options.max_urange_set = o.max_urange_set;
   ScanPipeline pipeline(options, lookupIn(tf));
+  pipeline.setOdometryPeriod(odometry_period.period());
   int loop_attempts = 0, loops = 0, rebuilds = 0;
   int unstamped_said = 0, no_odometry_said = 0;  // the first few of each are said
   double first_stamp = -1, last_stamp = 0;

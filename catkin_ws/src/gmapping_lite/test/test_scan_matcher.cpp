@@ -151,3 +151,47 @@ TEST(ScanMatcher, DISABLED_TurningInFrontOfAWallDoesNotSlideAlongIt) {
     registerScan(&map, pose, f.laser, ranges, params.max_range, params.max_urange);
   }
 }
+
+TEST(ScanMatcher, KnownPointsAreKnownWhereverTheClimbReaches) {
+  // A corridor along x, mapped from one pose with a short usable range, then scanned from
+  // further along with the full range: the scan's end points on the walls run past the mapped
+  // part. knownPoints keeps a point only if its end point is in seen space at the pose and at
+  // the pose moved by +-reach along x and along y, so a climb within that reach cannot carry a
+  // kept point into unknown space (where it would score differently).
+  Fixture f;
+  f.world = SyntheticWorld(20.0, 10.0, 0.01);
+  f.world.fillRect(0.0, 3.9, 20.0, 4.0);
+  f.world.fillRect(0.0, 6.0, 20.0, 6.1);
+  MatcherParams params;
+  ScanMatcher matcher(params);
+  GridMap map(0.05);
+  const Pose2 first(2.0, 5.0, 0.0);
+  registerScan(&map, first, f.laser, f.scanAt(first), 8.0, 4.0);
+  const Pose2 pose(2.4, 5.0, 0.0);
+  const ScanPoints all = matcher.matchPoints(f.laser, f.scanAt(pose));
+  matcher.prepare(map, pose, all);
+  auto known = [&](const Pose2& at, const ScanPoints& points) {
+    int matched = 0, contradicting = 0;
+    matcher.agreement(at, points, &matched, &contradicting);
+    return matched + contradicting;
+  };
+  // Reach 0: the points known at the pose itself.
+  const ScanPoints here = matcher.knownPoints(pose, all, 0.0);
+  EXPECT_EQ(known(pose, here), static_cast<int>(here.points.size()));
+  EXPECT_EQ(known(pose, all), static_cast<int>(here.points.size()));
+  EXPECT_LT(here.points.size(), all.points.size());  // the walls run past the map
+  // With a reach, a subset, known at every displaced pose.
+  const double r = 0.05;
+  const ScanPoints kept = matcher.knownPoints(pose, all, r);
+  EXPECT_LT(kept.points.size(), here.points.size());  // the points near the map's edge go
+  EXPECT_GT(kept.points.size(), here.points.size() / 2);
+  double beams = 0.0;
+  for (const auto& p : kept.points) beams += p.beams;
+  EXPECT_DOUBLE_EQ(kept.beams, beams);
+  const Pose2 moved[4] = {{pose.x + r, pose.y, pose.theta}, {pose.x - r, pose.y, pose.theta},
+                          {pose.x, pose.y + r, pose.theta}, {pose.x, pose.y - r, pose.theta}};
+  for (const Pose2& m : moved) EXPECT_EQ(known(m, kept), static_cast<int>(kept.points.size()));
+  // Some of the points known at the pose fall into unknown space one reach forward: those the
+  // reach leaves out, which would otherwise hold a climb back from moving forward.
+  EXPECT_LT(known(moved[0], here), static_cast<int>(here.points.size()));
+}

@@ -183,6 +183,17 @@ TEST(ScanPipeline, FirstPlacedScanMakesTheFilterAndSaysItsRanges) {
   EXPECT_EQ(pipeline.filter()->updates(), 1);
 }
 
+TEST(ScanPipeline, GivesTheFilterOdometrysPeriodFromTheNextScan) {
+  Fixture f;
+  ScanPipeline pipeline(f.options, lookupIn(f.tf));
+  pipeline.process(scanAt(kStart));
+  ASSERT_NE(pipeline.filter(), nullptr);
+  EXPECT_EQ(pipeline.filter()->odometryPeriod(), 0.0);  // unknown: the scan period alone
+  pipeline.setOdometryPeriod(0.02);
+  pipeline.process(scanAt(kStart + 0.1));
+  EXPECT_DOUBLE_EQ(pipeline.filter()->odometryPeriod(), 0.02);
+}
+
 TEST(ScanPipeline, HugeRangeMaxIsClampedWithAWarning) {
   Fixture f;
   ScanPipeline pipeline(f.options, lookupIn(f.tf));

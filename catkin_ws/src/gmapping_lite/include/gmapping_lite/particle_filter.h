@@ -66,6 +66,11 @@ class ParticleFilter {
   double neff() const;
   double entropy() const;
 
+  // The period at which odometry is sampled (s; OdometryPeriod), for the prior's timing term;
+  // 0 (the default) while unknown: the term then takes the scan period alone.
+  void setOdometryPeriod(double seconds) { odometry_period_ = seconds > 0.0 ? seconds : 0.0; }
+  double odometryPeriod() const { return odometry_period_; }
+
   // map -> odom correction of the best particle at the last processed scan.
   Pose2 mapToOdom() const;
   bool initialized() const { return initialized_; }
@@ -109,6 +114,7 @@ class ParticleFilter {
   double last_update_stamp_ = 0.0;
   double previous_stamp_ = 0.0;  // stamp of the last scan seen
   double scan_period_ = 0.0;     // running mean of the interval between scans (s)
+  double odometry_period_ = 0.0;  // odometry's sample period (s), 0 while unknown
   double speed_ = 0.0, turn_rate_ = 0.0;  // odometry's forward and turn rate at the last scan
   double last_update_speed_ = 0.0, last_update_turn_rate_ = 0.0;  // at the last update
 };

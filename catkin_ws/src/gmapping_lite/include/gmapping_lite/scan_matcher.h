@@ -76,6 +76,13 @@ class ScanMatcher {
   double score(const Pose2& pose, const ScanPoints& scan) const;
   // Log-likelihood of the scan at `pose` (per beam, with lsigma), and its score.
   double likelihood(const Pose2& pose, const ScanPoints& scan, double* score) const;
+  // The points of `all` whose end point lies in space the map has seen (matched or
+  // contradicting the map, not unknown) at `pose` and at `pose` moved by +-reach along x and
+  // along y. A point that crosses into unknown space within a climb's reach would make the
+  // climb's objective lopsided: it scores as matched on the mapped side and not at all beyond,
+  // so the end points near the mapped end of a wall along the motion would hold the match
+  // back from moving forward while moving backward costs nothing.
+  ScanPoints knownPoints(const Pose2& pose, const ScanPoints& all, double reach) const;
   // Maximise log-likelihood + prior from `start` (the prior's centre); returns the score at
   // the best pose and writes it.
   double optimize(const Pose2& start, const ScanPoints& scan, Pose2* best,

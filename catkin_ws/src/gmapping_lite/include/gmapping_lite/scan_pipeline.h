@@ -79,6 +79,10 @@ class ScanPipeline {
 
   ScanOutcome process(const sensor_msgs::LaserScan& scan);
 
+  // Odometry's sample period (s; OdometryPeriod over the odom -> base transforms), given to
+  // the filter with each scan from now on; 0 while unknown.
+  void setOdometryPeriod(double seconds) { odometry_period_ = seconds; }
+
   // Null until the first scan that could be placed.
   const ParticleFilter* filter() const { return filter_.get(); }
   // The filter's parameters, with maxRange / maxUrange once the first scan set them.
@@ -106,6 +110,7 @@ class ScanPipeline {
   TransformLookup lookup_;
   std::unique_ptr<ParticleFilter> filter_;
   std::map<std::string, Laser> lasers_;
+  double odometry_period_ = 0.0;
   int scans_ = 0, unstamped_ = 0, without_mount_ = 0, without_odometry_ = 0;
   ScanDrops malformed_{5.0};  // say at most one drop every 5 s of scan time, with the count
 };
