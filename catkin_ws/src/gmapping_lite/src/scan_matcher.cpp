@@ -292,8 +292,8 @@ double ScanMatcher::optimizeFrom(const Pose2& start, const Pose2& centre,
   // centre, and starts offset from it by the start's distance from the centre, so its reach
   // is that offset plus the prior's translation sd. Translation only: a reach in heading
   // sweeps an end point by the reach times its range (with gmapping's default motion noise
-  // about 0.2 rad an update: a metre at 5 m), which leaves little of the scan (twelfth attempt, a2 against
-  // a6, bench/slam_robustness_notes.md).
+  // about 0.2 rad an update: a metre at 5 m), which leaves little of the scan (twelfth
+  // attempt, a2 against a6, bench/slam_robustness_notes.md).
   const double reach = std::hypot(start.x - centre.x, start.y - centre.y) +
                        std::max(0.0, prior.sigma_xy);
   const ScanPoints scan = knownPoints(start, all, reach);
