@@ -4,10 +4,10 @@ import io
 from pathlib import Path
 
 import numpy as np
-from rosbook_env.files import special_file_note
+from rosbook_env.files import looked_in_note, special_file_note
 
 from map_server import pgm
-from map_server.errors import MapFileNotFoundError, MapImageError, cwd_note
+from map_server.errors import MapFileNotFoundError, MapImageError
 
 # map_saver's pixel values.
 PGM_FREE, PGM_OCCUPIED, PGM_UNKNOWN = 254, 0, 205
@@ -29,7 +29,7 @@ def read_grey_image(path):
         with open(path, "rb") as handle:
             data = handle.read()
     except FileNotFoundError:
-        raise MapFileNotFoundError(f"{path}: map image not found{cwd_note(path)}") from None
+        raise MapFileNotFoundError(f"{path}: map image not found{looked_in_note(path)}") from None
     except OSError as err:
         raise MapImageError(f"{path}: cannot read image: {err.strerror or err}") from None
     if pgm.is_pgm(data):
