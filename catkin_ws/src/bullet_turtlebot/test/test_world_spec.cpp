@@ -88,6 +88,8 @@ TEST(WorldSpec, ErrorsNameTheFileAndTheProblem) {
   expect_error("resolution: 0.05\n", "empty world");
   expect_error("image: m.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 2\n", "'negate' must be 0 or 1");
   expect_error("", "expected a YAML mapping");
+  expect_error("resolution: 0.05\nstart: [0, 0]\nstart: [1, 1]\n", "key 'start' given twice (lines 2 and 3)");
+  expect_error("cylinders:\n  - {position: [0, 0], radius: 1, radius: 2, height: 1}\n", "key 'radius' given twice");
   try {
     load_world_file(dir);
     FAIL() << "no error for a directory";

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "bullet_turtlebot/image_io.hpp"
@@ -109,6 +110,28 @@ std::string dir_name(const std::string& path) {
   return path.substr(0, slash);
 }
 
+// yaml-cpp keeps every pair of a mapping and answers a lookup with the first, where PyYAML (and
+// so world_start.py, world_check.py, map_server) would take the last: refuse the ambiguity,
+// naming the key and both lines, as rosbook_env.yaml_files does for the Python readers.
+void refuse_duplicate_keys(const YAML::Node& node, const Parser& parser, int depth = 0) {
+  if (depth > 64) parser.fail("nested too deeply to be a world file");
+  if (node.IsMap()) {
+    std::map<std::string, int> first_line;
+    for (const auto& pair : node) {
+      const int line = pair.first.Mark().line + 1;
+      const std::string key = pair.first.IsScalar() ? pair.first.Scalar() : YAML::Dump(pair.first);
+      const auto [seen, fresh] = first_line.emplace(key, line);
+      if (!fresh) {
+        parser.fail("key '" + key + "' given twice (lines " + std::to_string(seen->second) + " and " +
+                    std::to_string(line) + "); keep one of them");
+      }
+      refuse_duplicate_keys(pair.second, parser, depth + 1);
+    }
+  } else if (node.IsSequence()) {
+    for (const auto& item : node) refuse_duplicate_keys(item, parser, depth + 1);
+  }
+}
+
 }  // namespace
 
 std::vector<std::uint8_t> threshold_occupied(const std::vector<std::uint8_t>& pixels, bool negate,
@@ -132,6 +155,7 @@ WorldSpec parse_world_yaml(const std::string& text, const std::string& source, c
                 std::to_string(e.mark.column + 1) + ": " + e.msg);
   }
   if (!root.IsMap()) parser.fail("expected a YAML mapping (keys such as image, resolution, origin)");
+  refuse_duplicate_keys(root, parser);
 
   WorldSpec spec;
   spec.source = source;
