@@ -79,6 +79,9 @@ def test_slam_offline_drops_malformed_scans_from_a_bag(ros, tmp_path):
     assert summary, done.stdout + done.stderr
     assert 0 < int(summary[2]) <= 30 and int(summary[1]) > 200, summary[0]
     assert (tmp_path / "map.pgm").exists() and (tmp_path / "map.yaml").exists()
+    # The odometry period the motion prior used, measured from the bag: synthetic_scans.py
+    # publishes odom -> base_footprint every 50 Hz tick.
+    assert "odometry every 0.020 s (measured)" in done.stdout, done.stdout
 
 
 def test_huge_range_max_is_clamped_once_for_the_default_max_range(ros):
