@@ -323,7 +323,7 @@ CASES = {
         "wrong number of arguments",
     ),
     "slam_bench help": (["gmapping_lite", "slam_bench", "--help"], 0, "usage: slam_bench"),
-    "slam_offline help": (["gmapping_lite", "slam_offline", "--help"], 0, "usage: slam_offline BAG"),
+    "slam_offline help": (["gmapping_lite", "slam_offline", "--help"], 0, "usage: slam_offline"),
     "record_office_bag no arguments": (
         ["gmapping_lite", "record_office_bag"],
         2,
