@@ -45,6 +45,9 @@ def test_then_navigate_visits_goals_on_the_saved_map(navigated):
     for n in range(1, GOALS + 1):  # a progress line as each goal is sent and as it ends
         assert f"mapping_demo: goal {n}/{GOALS}: (" in done.stdout, done.stdout
     assert (out / "office_nav.bag").stat().st_size > 0
+    # The goal records moved into place with the bag (written under a name of their own).
+    records = (out / "office_nav_goals.jsonl").read_text().splitlines()
+    assert len(records) == GOALS and not (out / "office_nav_goals.partial.jsonl").exists()
     figures = json.loads((out / "figures.json").read_text())
     assert figures["walls_within_tolerance"] > 0  # the mapping figures are still there
     nav = figures["navigation"]
