@@ -43,6 +43,7 @@ FAST_INTEGRATION = (
     "tests/launch/test_launch_files.py::test_the_table_names_every_launch_file",
     "tests/rosbook_eval/test_same_figures.py",
     "tests/bench/test_results_section.py",  # unit tests on text (bench/ has no test folder)
+    "tests/bench/test_bench_chapter9.py",  # unit tests of its tour (no ROS)
     "tests/launch/test_launch_files.py::test_launch_file_brings_up_its_nodes[catkin_ws/src/rosbook_demo/launch/mapping_live.launch]",
 )
 

@@ -302,6 +302,16 @@ CASES = {
         2,
         "invalid choice: 'nosuch'",
     ),
+    "waypoint_driver no waypoints file": (
+        ["gmapping_lite", "waypoint_driver", "--waypoints", "{tmp}/none.yaml"],
+        1,
+        "waypoint_driver: cannot read {tmp}/none.yaml",
+    ),
+    "waypoint_driver waypoints not a list": (
+        ["gmapping_lite", "waypoint_driver", "--waypoints", "{tmp}/file"],
+        1,
+        "expected a non-empty list of [x, y] or [x, y, spin]",
+    ),
     "slam_bench unknown argument": (
         ["gmapping_lite", "slam_bench", "--nosuch"],
         2,
