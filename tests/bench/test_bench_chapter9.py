@@ -1,18 +1,16 @@
 """bench/bench_chapter9's scripted teleop tour on a small synthetic maze: the cell graph read
 from a grid, a seeded depth-first tour over every reachable cell, and its waypoints."""
 
-import importlib.util
 import math
-from importlib.machinery import SourceFileLoader
+import sys
 from pathlib import Path
 
 import numpy as np
 
-BENCH = Path(__file__).resolve().parents[2] / "bench" / "bench_chapter9"
-_loader = SourceFileLoader("bench_chapter9", str(BENCH))
-_spec = importlib.util.spec_from_loader("bench_chapter9", _loader)
-bench = importlib.util.module_from_spec(_spec)
-_loader.exec_module(bench)
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from bench_script import load_bench_script  # noqa: E402
+
+bench = load_bench_script("bench_chapter9")
 
 RES = 0.1
 CELL = 1.0  # 10 grid cells per maze cell

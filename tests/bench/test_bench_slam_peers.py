@@ -3,14 +3,14 @@ with time(NULL), gets the run's seed from bench/gmapping_seed.c preloaded into i
 the bench builds it, time() then returns $GMAPPING_SEED, and libc's time without it); and the
 wait after the playback ends when the nodes go idle."""
 
-import importlib.util
 import subprocess
-from importlib.machinery import SourceFileLoader
+import sys
 from pathlib import Path
 
 import pytest
 
-BENCH = Path(__file__).resolve().parents[2] / "bench"
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from bench_script import load_bench_script  # noqa: E402
 
 # time(NULL) as a C program calls it, from a Python child (ctypes calls libc's symbol through
 # the dynamic linker, so a preloaded time() takes its place as it does in slam_gmapping).
@@ -18,10 +18,7 @@ CALL_TIME = "import ctypes; print(ctypes.CDLL(None).time(None))"
 
 
 def bench_slam_peers():
-    loader = SourceFileLoader("bench_slam_peers", str(BENCH / "bench_slam_peers"))
-    module = importlib.util.module_from_spec(importlib.util.spec_from_loader(loader.name, loader))
-    loader.exec_module(module)
-    return module
+    return load_bench_script("bench_slam_peers")
 
 
 def time_in(env):

@@ -1,13 +1,13 @@
 """bench/results_section.py on text: a section is replaced whole, or, with keep_subsections,
 only the '### ' subsections the new text brings (bench_slam_worlds' per-laser tables)."""
 
-import importlib.util
 import sys
-from importlib.machinery import SourceFileLoader
 from pathlib import Path
 from types import SimpleNamespace
 
-BENCH = Path(__file__).resolve().parents[2] / "bench"
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from bench_script import BENCH, load_bench_script  # noqa: E402
+
 sys.path.insert(0, str(BENCH))
 from results_section import merge_subsections, split_subsections, write_section  # noqa: E402
 
@@ -79,10 +79,7 @@ def test_a_section_not_there_yet_is_appended(tmp_path):
 
 
 def load_bench_slam_worlds():
-    loader = SourceFileLoader("bench_slam_worlds", str(BENCH / "bench_slam_worlds"))
-    module = importlib.util.module_from_spec(importlib.util.spec_from_loader(loader.name, loader))
-    loader.exec_module(module)
-    return module
+    return load_bench_script("bench_slam_worlds")
 
 
 def test_a_kinect_only_run_keeps_the_wide_laser_subsection(tmp_path):
