@@ -326,6 +326,11 @@ class RosGraph:
     def services(self):
         return {name for name, _ in self.system_state()[2]}
 
+    def subscribes(self, node, *topics):
+        """True once the master lists `node` as a subscriber of every topic."""
+        subscribers = dict(self.system_state()[1])
+        return all(node in subscribers.get(topic, []) for topic in topics)
+
     def wait_for_topic(self, topic, timeout=60):
         topic = "/" + topic.lstrip("/")
         self.wait_for(lambda: topic in self.topics(), timeout, f"topic {topic}")

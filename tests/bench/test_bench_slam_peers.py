@@ -17,8 +17,7 @@ from bench_script import load_bench_script  # noqa: E402
 CALL_TIME = "import ctypes; print(ctypes.CDLL(None).time(None))"
 
 
-def bench_slam_peers():
-    return load_bench_script("bench_slam_peers")
+bench = load_bench_script("bench_slam_peers")
 
 
 def time_in(env):
@@ -29,7 +28,6 @@ def time_in(env):
 
 
 def test_preloaded_time_returns_the_seed(tmp_path):
-    bench = bench_slam_peers()
     lib = bench.seed_library(tmp_path)
     env = bench.peer_environment({"PATH": "/usr/bin:/bin"}, tmp_path / "ws", lib, 7)
     assert env["GMAPPING_SEED"] == "7"
@@ -40,7 +38,6 @@ def test_preloaded_time_returns_the_seed(tmp_path):
 
 
 def test_without_a_seed_time_is_libcs(tmp_path):
-    bench = bench_slam_peers()
     lib = bench.seed_library(tmp_path)
     env = {"PATH": "/usr/bin:/bin", "LD_PRELOAD": str(lib)}
     # The clock's seconds, not a seed: well past the seeds a bench run uses.
@@ -48,20 +45,17 @@ def test_without_a_seed_time_is_libcs(tmp_path):
 
 
 def test_an_existing_preload_is_kept(tmp_path):
-    bench = bench_slam_peers()
     env = bench.peer_environment({"LD_PRELOAD": "libother.so"}, tmp_path, "libseed.so", 3)
     assert env["LD_PRELOAD"] == "libseed.so libother.so"
 
 
 def test_seed_zero_is_refused():
-    bench = bench_slam_peers()
     with pytest.raises(SystemExit) as refused:
         bench.parse_args(["--stage-seeds", "0,1"])
     assert refused.value.code == 2
 
 
 def test_waiting_for_the_nodes_ends_when_they_are_idle():
-    bench = bench_slam_peers()
     idle = subprocess.Popen(["sleep", "60"])
     busy = subprocess.Popen(["/usr/bin/python3", "-c", "while True: pass"])
     try:

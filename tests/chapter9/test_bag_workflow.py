@@ -26,13 +26,6 @@ def clock(ros):
     return ros.sim_time()
 
 
-def subscribes(ros, node, *topics):
-    """True once the master lists `node` as a subscriber of every topic."""
-    master = xmlrpc.client.ServerProxy(ros.env["ROS_MASTER_URI"])
-    _, _, (_, subscribers, _) = master.getSystemState("/chapter9_tests")
-    return all(node in dict(subscribers).get(topic, []) for topic in topics)
-
-
 def scans_dropped(ros, node="/slam_gmapping"):
     """Scans that `node`'s /scan queue dropped, as its getBusStats (roscpp) counts them."""
     master = xmlrpc.client.ServerProxy(ros.env["ROS_MASTER_URI"])
@@ -57,7 +50,7 @@ def map_from_bag(ros, bag):
     fresh slam_gmapping. Returns that node, still running."""
     for rate in (SPEED, 2.0, 1.0, 0.5):
         slam = ros.start(["rosrun", "gmapping", "slam_gmapping"], name="slam_gmapping")
-        ros.wait_for(lambda: subscribes(ros, "/slam_gmapping", "/scan", "/tf"), 60, "slam")
+        ros.wait_for(lambda: ros.subscribes("/slam_gmapping", "/scan", "/tf"), 60, "slam")
         # Played once slam_gmapping is connected to /scan and /tf.
         cmd = ["rosbag", "play", "--clock", "--wait-for-subscribers", "-r", str(rate), bag]
         play = ros.start(cmd, name="play")
@@ -220,7 +213,7 @@ def test_relative_bag_argument_means_the_launching_shell_folder(ros, tmp_path):
     )
     recording = ros.start(["roslaunch", str(record), "bag:=data.bag"], env=env, cwd=shell)
     ros.wait_for(lambda: (shell / "data.bag.active").exists(), 60, "recording into shell/")
-    ros.wait_for(lambda: subscribes(ros, "/record", "/chatter"), 60, "record to subscribe")
+    ros.wait_for(lambda: ros.subscribes("/record", "/chatter"), 60, "record to subscribe")
     ros.wait_for(lambda: messages_received(ros, "/record", "/chatter") >= 5, 60, "messages")
     ros.stop(recording, timeout=30)
     assert f"recording to {shell / 'data.bag'}" in ros.output(recording)

@@ -41,19 +41,19 @@ struct Options {
   double tilt_tolerance = 0.1;
 };
 
+constexpr const char* kUsage =
+    "usage: slam_offline BAG [--out BASE] [--scan TOPIC] [--base-frame F] [--odom-frame F] "
+    "[--trajectory CSV] [--param NAME=VALUE ...]\n";
+
 int usage(const char* why) {
-  std::fprintf(stderr,
-               "slam_offline: %s\nusage: slam_offline BAG [--out BASE] [--scan TOPIC] "
-               "[--base-frame F] [--odom-frame F] [--trajectory CSV] [--param NAME=VALUE ...]\n",
-               why);
+  std::fprintf(stderr, "slam_offline: %s\n%s", why, kUsage);
   return 2;
 }
 
 // --help: what the tool does and its options, on stdout, exit 0.
 int help() {
   std::printf(
-      "usage: slam_offline BAG [--out BASE] [--scan TOPIC] [--base-frame F] [--odom-frame F] "
-      "[--trajectory CSV] [--param NAME=VALUE ...]\n\n"
+      "%s\n"
       "gmapping_lite's SLAM over a recorded bag, every scan in order, as fast as the machine goes;\n"
       "writes the map as BASE.pgm and BASE.yaml (map_server's format).\n\n"
       "  --out BASE         the map's file names without extension (default: map)\n"
@@ -61,7 +61,8 @@ int help() {
       "  --base-frame F     the robot's frame (default: base_link)\n"
       "  --odom-frame F     odometry's frame (default: odom)\n"
       "  --trajectory CSV   also write the SLAM path: stamp,x,y,yaw per update\n"
-      "  --param NAME=VALUE a slam_gmapping parameter (e.g. particles=30, maxUrange=6.0); repeatable\n");
+      "  --param NAME=VALUE a slam_gmapping parameter (e.g. particles=30, maxUrange=6.0); repeatable\n",
+      kUsage);
   return 0;
 }
 
@@ -297,10 +298,11 @@ int main(int argc, char** argv) {
                      1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
   // The odometry period the motion prior's timing term used (OdometryPeriod over the bag's
   // odom -> base transforms), so a user can check it against the robot's odometry rate.
+  char period[32];
+  std::snprintf(period, sizeof(period), "%.3f", odometry_period.period());  // rounded, not cut
   const std::string odometry_note =
-      odometry_period.known()
-          ? "odometry every " + std::to_string(odometry_period.period()).substr(0, 5) + " s (measured)"
-          : "odometry period unknown (no " + odom_frame + " -> " + base_frame + " on /tf)";
+      odometry_period.known() ? "odometry every " + std::string(period) + " s (measured)"
+                              : "odometry period unknown (no " + odom_frame + " -> " + base_frame + " on /tf)";
   std::printf("slam_offline: %d scans (%d without odometry, %d malformed), %d updates, "
               "%zu tf messages; "
               "%.1f s of data in %.2f s (%.1fx real time, cpu %.2f s); map %dx%d written to "
