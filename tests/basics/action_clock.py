@@ -31,11 +31,13 @@ import os
 import sys
 import threading
 import time
+import xmlrpc.client
 
 import rospy
 from actionlib_msgs.msg import GoalID, GoalStatus, GoalStatusArray
 from basics.msg import TimerActionFeedback, TimerActionGoal, TimerActionResult
 from basics.timer import FEEDBACK_PERIOD, TICK_LAG
+from rosbook_env.master_watch import timed_proxy
 from rosgraph_msgs.msg import Clock
 
 NS = 1_000_000_000
@@ -64,6 +66,7 @@ class ActionClock:
         self.subscribers["status"] = rospy.Subscriber(
             "/timer/status", GoalStatusArray, self.on_status, queue_size=100
         )
+        self.confirmed = set()  # kinds whose publisher has confirmed its end of the connection
         self.ready_file = args.out + ".ready"
         self.ready = False
 
@@ -104,8 +107,28 @@ class ActionClock:
             self.ready = True
 
     def hears(self, *kinds):
-        """Connected to a publisher of each of these topics."""
-        return all(self.subscribers[k].get_num_connections() > 0 for k in kinds)
+        """A publisher of each of these topics sends to this clock."""
+        return all(self.publisher_sends(kind) for kind in kinds)
+
+    def publisher_sends(self, kind):
+        """True once a publisher of `kind`'s topic lists this node among its connections.
+        The subscriber's own count is no proof: rospy adds a connection before its handshake,
+        and the publisher sends only once it has added its end (after the handshake); a
+        message sent between the two (a server's only result) would be lost to this clock."""
+        if kind in self.confirmed:
+            return True
+        subscriber = self.subscribers[kind]
+        me = rospy.get_caller_id()
+        for connection in list(subscriber.impl.connections):
+            uri = connection.endpoint_id
+            try:
+                code, _, bus = timed_proxy(uri).getBusInfo(me)
+            except (OSError, xmlrpc.client.Error):
+                continue  # a publisher gone or busy: ask again on the next repeat
+            if code == 1 and any(r[1] == me and r[4] == subscriber.resolved_name for r in bus):
+                self.confirmed.add(kind)
+                return True
+        return False
 
     def result_seen(self):
         return self.count("result") > 0

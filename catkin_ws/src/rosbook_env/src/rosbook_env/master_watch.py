@@ -36,7 +36,8 @@ class _TimeoutTransport(xmlrpc.client.Transport):
         return connection
 
 
-def _proxy(uri):
+def timed_proxy(uri):
+    """An XML-RPC proxy whose calls give up after TIMEOUT s (rosgraph's wait forever)."""
     return xmlrpc.client.ServerProxy(uri, transport=_TimeoutTransport(), allow_none=True)
 
 
@@ -78,7 +79,7 @@ class _MasterWatch:
     def master_identity(self):
         """(pid, run_id) of the master, or None when it does not answer."""
         try:
-            master = _proxy(self.master_uri)
+            master = timed_proxy(self.master_uri)
             code, _, pid = master.getPid(self.caller_id)
             if code != 1:
                 return None
@@ -89,7 +90,7 @@ class _MasterWatch:
 
     def snapshot_private_params(self):
         try:
-            code, _, value = _proxy(self.master_uri).getParam(self.caller_id, self.private_ns)
+            code, _, value = timed_proxy(self.master_uri).getParam(self.caller_id, self.private_ns)
             if code == 1 and isinstance(value, dict) and value:
                 self.private_params = value
         except (OSError, http.client.HTTPException, xmlrpc.client.Error):
@@ -129,8 +130,8 @@ class _MasterWatch:
             with topics.lock:  # as rospy's RegManager does: no change while the lists are read
                 pubs, subs = topics.get_publications(), topics.get_subscriptions()
         srvs = services.get_services() if services else []
-        master = _proxy(self.master_uri)
-        node = _proxy(self.node_uri)
+        master = timed_proxy(self.master_uri)
+        node = timed_proxy(self.node_uri)
         for name, data_type in pubs:
             if rospy.core.is_shutdown_requested():
                 return
