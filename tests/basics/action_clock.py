@@ -31,14 +31,16 @@ import os
 import sys
 import threading
 import time
-import xmlrpc.client
+from pathlib import Path
 
 import rospy
 from actionlib_msgs.msg import GoalID, GoalStatus, GoalStatusArray
 from basics.msg import TimerActionFeedback, TimerActionGoal, TimerActionResult
 from basics.timer import FEEDBACK_PERIOD, TICK_LAG
-from rosbook_env.master_watch import timed_proxy
 from rosgraph_msgs.msg import Clock
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+from delivery import a_publisher_sends_to_us  # noqa: E402
 
 NS = 1_000_000_000
 REPEAT = 0.02  # wall seconds between repeats of the held clock
@@ -107,28 +109,17 @@ class ActionClock:
             self.ready = True
 
     def hears(self, *kinds):
-        """A publisher of each of these topics sends to this clock."""
+        """A publisher of each of these topics sends to this clock. This clock's own count of
+        connections is no proof: a message sent before the publisher adds its end (a server's
+        only result) would be lost to it."""
         return all(self.publisher_sends(kind) for kind in kinds)
 
     def publisher_sends(self, kind):
-        """True once a publisher of `kind`'s topic lists this node among its connections.
-        The subscriber's own count is no proof: rospy adds a connection before its handshake,
-        and the publisher sends only once it has added its end (after the handshake); a
-        message sent between the two (a server's only result) would be lost to this clock."""
-        if kind in self.confirmed:
-            return True
-        subscriber = self.subscribers[kind]
-        me = rospy.get_caller_id()
-        for connection in list(subscriber.impl.connections):
-            uri = connection.endpoint_id
-            try:
-                code, _, bus = timed_proxy(uri).getBusInfo(me)
-            except (OSError, xmlrpc.client.Error):
-                continue  # a publisher gone or busy: ask again on the next repeat
-            if code == 1 and any(r[1] == me and r[4] == subscriber.resolved_name for r in bus):
-                self.confirmed.add(kind)
-                return True
-        return False
+        """A publisher of `kind`'s topic lists this clock among its connections (once true,
+        it stays so: the server is not restarted)."""
+        if kind not in self.confirmed and a_publisher_sends_to_us(self.subscribers[kind]):
+            self.confirmed.add(kind)
+        return kind in self.confirmed
 
     def result_seen(self):
         return self.count("result") > 0

@@ -9,10 +9,11 @@ the count our publisher wrote to it. rospy counts a message when its receive thr
 it, just before it runs the callback in that same thread.
 """
 
-from xmlrpc.client import ServerProxy
+import xmlrpc.client
 
 import rosgraph
 import rospy
+from rosbook_env.master_watch import timed_proxy
 
 
 def a_publisher_sends_to_us(sub):
@@ -30,8 +31,8 @@ def a_publisher_sends_to_us(sub):
             continue
         for node in nodes:
             try:
-                code, _, info = ServerProxy(master.lookupNode(node)).getBusInfo(me)
-            except (OSError, rosgraph.MasterError):
+                code, _, info = timed_proxy(master.lookupNode(node)).getBusInfo(me)
+            except (OSError, xmlrpc.client.Error, rosgraph.MasterError):
                 continue
             if code == 1 and any(
                 row[1] == me and row[2] == "o" and row[4] == sub.name for row in info
@@ -59,16 +60,18 @@ class Delivery:
     def received(self, node):
         """Messages `node` has read from our connection on the topic (0 if none yet)."""
         if node not in self.proxies:
-            self.proxies[node] = ServerProxy(self.master.lookupNode(node))
+            self.proxies[node] = timed_proxy(self.master.lookupNode(node))
         proxy = self.proxies[node]
-        code, _, info = proxy.getBusInfo(self.me)
+        try:
+            code, _, info = proxy.getBusInfo(self.me)
+            if code == 1:
+                code, _, stats = proxy.getBusStats(self.me)
+        except (OSError, xmlrpc.client.Error):
+            return 0  # a node too busy to answer within the timeout: asked again next time
         if code != 1:
             return 0
         # (connection id, publisher's URI, direction, transport, topic, ...)
         from_me = {c[0] for c in info if c[4] == self.topic and c[1] == self.my_uri}
-        code, _, stats = proxy.getBusStats(self.me)
-        if code != 1:
-            return 0
         for topic, connections in stats[1]:  # subscriptions: (id, bytes, messages, ...)
             if topic == self.topic:
                 return sum(c[2] for c in connections if c[0] in from_me)

@@ -54,7 +54,7 @@ from std_msgs.msg import String
 from std_srvs.srv import Trigger
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from delivery import Delivery  # noqa: E402
+from delivery import Delivery, a_publisher_sends_to_us  # noqa: E402
 from topic_probe import to_plain  # noqa: E402
 
 NS = 1_000_000_000
@@ -119,7 +119,7 @@ class Lockstep:
             return msg_class is not None
 
         self.wait(subscribed, f"a publisher of {self.gate_topic}")
-        self.wait(lambda: self.gate_sub.get_num_connections() > 0, "the gate connection")
+        self.wait(lambda: a_publisher_sends_to_us(self.gate_sub), "the gate connection")
         self.wait(self.clock_subscribers_connected, "the /clock subscribers")
         for pub in self.inputs:
             self.wait(lambda p=pub: p.get_num_connections() > 0, f"a subscriber of {pub.name}")
