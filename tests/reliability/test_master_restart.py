@@ -9,7 +9,9 @@ publisher (it then learns of it from registerSubscriber).
 """
 
 import os
+import shutil
 import signal
+import subprocess
 import xmlrpc.client
 from contextlib import contextmanager
 
@@ -66,8 +68,29 @@ def providers(ros, kind, name):
     return next((nodes for entry, nodes in ros.system_state()[kind] if entry == name), [])
 
 
-def wait_registered(ros, kind, name, node):
-    ros.wait_for(lambda: node in providers(ros, kind, name), TIMEOUT, f"{node} on {name}")
+def wait_registered(ros, kind, name, node, proc=None):
+    """Until the master lists `node` for `name`; on a time-out, with `proc`'s output and its
+    threads' stacks (where its master watch is stuck, if it is)."""
+    try:
+        ros.wait_for(lambda: node in providers(ros, kind, name), TIMEOUT, f"{node} on {name}")
+    except AssertionError as error:
+        if proc is None:
+            raise
+        raise AssertionError(f"{error}\n{ros.output(proc)}\n{thread_stacks(proc)}") from None
+
+
+def thread_stacks(proc):
+    """Every thread's backtrace of `proc`'s node (the newest process of its group), by gdb."""
+    gdb = shutil.which("gdb")
+    if gdb is None:
+        return "(no gdb for the threads' stacks)"
+    pids = subprocess.run(["pgrep", "-g", str(proc.pid)], capture_output=True, text=True)
+    node = max((int(p) for p in pids.stdout.split()), default=proc.pid)
+    command = [gdb, "-p", str(node), "-batch", "-ex", "thread apply all bt"]
+    try:
+        return subprocess.run(command, capture_output=True, text=True, timeout=120).stdout
+    except subprocess.TimeoutExpired:
+        return "(gdb did not finish)"
 
 
 def test_python_nodes_register_again_with_a_new_master(ros):
@@ -135,9 +158,9 @@ def test_simulator_registers_again_with_a_new_master(ros):
         ros.wait_for(lambda: providers(ros, 1, "/odom"), TIMEOUT, "the probe")
         ros.wait_for(lambda: providers(ros, 0, teleop), TIMEOUT, "rostopic pub")
 
-    wait_registered(ros, 0, "/odom", "/simulator")
-    wait_registered(ros, 1, teleop, "/simulator")
-    wait_registered(ros, 2, "/simulator/pause", "/simulator")
+    wait_registered(ros, 0, "/odom", "/simulator", sim)
+    wait_registered(ros, 1, teleop, "/simulator", sim)
+    wait_registered(ros, 2, "/simulator/pause", "/simulator", sim)
     # The new subscriber gets odometry, and it moves: the new publisher reached the simulator.
     ros.wait_for(
         lambda: any(m["msg"]["twist"]["twist"]["linear"]["x"] > 0.1 for m in odom.messages()),
