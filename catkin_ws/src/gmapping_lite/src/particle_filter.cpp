@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace gmapping_lite {
@@ -24,6 +25,19 @@ ParticleFilter::ParticleFilter(const SlamParams& params)
       rng_(params.seed) {
   particles_.resize(static_cast<std::size_t>(std::max(1, params.particles)));
   for (auto& p : particles_) p.map = GridMap(params.delta);
+}
+
+std::vector<double> relativeMatchEvidence(const std::vector<double>& nis) {
+  double sum = 0.0;
+  int matched = 0;
+  for (double x : nis)
+    if (std::isfinite(x)) sum += x, ++matched;
+  std::vector<double> evidence(nis.size(), 0.0);
+  if (matched == 0) return evidence;
+  const double mean = sum / matched;
+  for (std::size_t i = 0; i < nis.size(); ++i)
+    if (std::isfinite(nis[i])) evidence[i] = -0.5 * (nis[i] - mean);
+  return evidence;
 }
 
 std::vector<double> ParticleFilter::weights() const {
@@ -332,6 +346,8 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
   double mean_range = 0.0;
   for (const auto& q : points.points) mean_range += q.beams * std::hypot(q.hx, q.hy);
   mean_range = points.beams > 0.0 ? mean_range / points.beams : 0.0;
+  // Each particle's match's NIS against its own prediction (NaN: no match), for the weights.
+  std::vector<double> match_nis(particles_.size(), std::numeric_limits<double>::quiet_NaN());
   for (auto& p : particles_) {
     // Odometry's increment as this particle's estimate of its scales corrects it.
     const OdometryScale applied = significantScale(p);
@@ -375,6 +391,7 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
       p.pose = fuse(predicted, predicted_covariance, corrected,
                     matcher_.calibratedInformation(corrected, points), &p.covariance, &p.scale,
                     &consistency, &regressors);
+      match_nis[static_cast<std::size_t>(&p - particles_.data())] = consistency.first;
       nis_sum_ += consistency.first;
       nis_expected_ += consistency.second;
       p.drift_xy2 = p.drift_theta2 = 0.0;
@@ -407,6 +424,17 @@ UpdateReport ParticleFilter::addScan(const Pose2& odom, double stamp, const Lase
     best_score = std::max(best_score, score);
   }
 
+  // gmapping's weight is the scan's likelihood at the match; the improved proposal's weight
+  // is that likelihood integrated over the motion model, which also asks how probable the
+  // match is under the particle's prediction. In a maze a corridor turned 90 degrees fits the
+  // scan as well as the right one, and only that tells them apart. The factor is a calibrated
+  // probability: weights()' tempering of the per-beam likelihood (1 / (ogain N)) is undone.
+  const std::vector<double> evidence = relativeMatchEvidence(match_nis);
+  const double untempered = params_.ogain * double(particles_.size());
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    particles_[i].log_weight += evidence[i] * untempered;
+    particles_[i].weight_sum += evidence[i] * untempered;
+  }
   const std::vector<double> w = weights();
   double sum_sq = 0.0;
   for (double x : w) sum_sq += x * x;

@@ -33,6 +33,27 @@ SlamParams turtlebotParams() {
 
 }  // namespace
 
+TEST(ParticleFilter, MatchEvidenceIsRelativeToTheOtherParticlesMatches) {
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  // Mean NIS 3 over the matched: +1, 0, -1; a particle without a match: 0.
+  std::vector<double> e = relativeMatchEvidence({1.0, 3.0, 5.0, none});
+  ASSERT_EQ(e.size(), 4u);
+  EXPECT_DOUBLE_EQ(e[0], 1.0);
+  EXPECT_DOUBLE_EQ(e[1], 0.0);
+  EXPECT_DOUBLE_EQ(e[2], -1.0);
+  EXPECT_DOUBLE_EQ(e[3], 0.0);
+  // One match turned 90 degrees among consistent ones (NIS (pi/2)^2 / 0.0125 = 197 against
+  // about 3): far below the others, whose evidence hardly moves.
+  e = relativeMatchEvidence({3.0, 2.0, 197.0, 4.0});
+  EXPECT_LT(e[2] - e[0], -90.0);
+  EXPECT_NEAR(e[0] - e[1], -0.5, 1e-12);
+  // A correction every particle needs (the same large NIS) changes no weight.
+  e = relativeMatchEvidence({60.0, 60.0, none});
+  for (double x : e) EXPECT_DOUBLE_EQ(x, 0.0);
+  // Nothing matched: nothing to compare.
+  for (double x : relativeMatchEvidence({none, none})) EXPECT_DOUBLE_EQ(x, 0.0);
+}
+
 TEST(ParticleFilter, ProcessesFirstScanThenOnlyAfterEnoughMotion) {
   SlamParams params;
   params.particles = 5;

@@ -48,6 +48,15 @@ struct UpdateReport {
   bool map_rebuilt = false;     // a loop closure moved the trajectory and the map was redrawn
 };
 
+// Each particle's log-probability of its match under its own prediction, exp(-NIS / 2) (NIS
+// from fuse: the innovation against prediction plus match covariance), relative to the
+// update's mean over the particles that matched; 0 for one without a match (NaN). Relative,
+// because only differences between particles change their weights: a correction all of them
+// need (odometry drifted) weighs nothing, a particle that matched where its prediction says
+// it cannot be (a corridor turned 90 degrees) loses, and one whose match failed is taken as
+// consistent as the others, neither favoured nor penalised.
+std::vector<double> relativeMatchEvidence(const std::vector<double>& nis);
+
 class ParticleFilter {
  public:
   explicit ParticleFilter(const SlamParams& params);
